@@ -1,0 +1,35 @@
+#pragma once
+// Building closed solids: a convex stone as the intersection of half-spaces, and a stone from
+// a closed triangle mesh (coplanar neighbours merged into facets, convexity detected).
+
+#include <string>
+#include <vector>
+
+#include "geometry/stone.hpp"
+#include "util/result.hpp"
+
+namespace gem {
+
+// One cutting plane of a convex design: the solid is { x : plane.n·x <= plane.d }.
+struct FacetPlane {
+    Plane plane;
+    FacetKind kind = FacetKind::other;
+    std::string name;
+};
+
+// Intersects the half-spaces. Planes that end up with no area (redundant) are an error naming
+// the plane, since a design whose facet vanishes is not the design asked for; so is an
+// unbounded or empty intersection. The result has loops, triangles and convex = true.
+Result<Stone> stone_from_planes(const std::vector<FacetPlane>& planes, std::string name);
+
+// Builds a stone from a closed, consistently wound triangle mesh (outward = counter-clockwise).
+// Welds vertices closer than `weld_tolerance` (relative to the mesh size), merges coplanar
+// neighbouring triangles into facets, detects convexity. Open or non-manifold meshes are errors.
+Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
+                                   const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                   std::string name, double weld_tolerance = 1e-9);
+
+// Triangulates every facet loop (ear clipping, so non-convex facets work) into stone.triangles.
+void triangulate_facets(Stone& stone);
+
+}  // namespace gem
