@@ -1,0 +1,36 @@
+#pragma once
+// Encoding and decoding of the .gemdb metadata sections (stone, material, camera, build
+// parameters, view grid). Decoders validate every count and value and report what is wrong;
+// the reader adds the file name.
+
+#include <cstdint>
+#include <span>
+
+#include "geometry/stone.hpp"
+#include "tables/bytes.hpp"
+#include "tables/database_types.hpp"
+#include "tables/quantise.hpp"
+#include "tables/view_grid.hpp"
+#include "util/result.hpp"
+
+namespace gem {
+
+struct ParamsSection {
+    BuildParams params;
+    PositionBox box;  // the exit-position quantisation box
+};
+
+void write_stone_section(ByteWriter& out, const Stone& stone);  // all but the material
+void write_material_section(ByteWriter& out, const Material& material);
+void write_camera_section(ByteWriter& out, const CameraModel& camera);
+void write_params_section(ByteWriter& out, const BuildParams& params, const PositionBox& box);
+void write_grid_section(ByteWriter& out, const ViewGrid& grid);
+
+Result<Stone> read_stone_section(std::span<const std::uint8_t> bytes);
+Result<Material> read_material_section(std::span<const std::uint8_t> bytes);
+Result<CameraModel> read_camera_section(std::span<const std::uint8_t> bytes);
+Result<ParamsSection> read_params_section(std::span<const std::uint8_t> bytes);
+Result<ViewGrid> read_grid_section(std::span<const std::uint8_t> bytes,
+                                   const std::vector<glm::dmat3>& symmetry);
+
+}  // namespace gem

@@ -1,0 +1,45 @@
+#pragma once
+// The gemtables subcommands, each a function from its parsed options to an exit status.
+// They print their result on stdout and one clear message on stderr when something is wrong.
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace gem::tables {
+
+struct BuildOptions {
+    std::string stone_file;
+    std::string out;
+    std::vector<std::uint32_t> levels{128, 256, 512};
+    double spacing_deg = 5.0;  // the thesis stored a table every 0.1 rad (5.7°)
+    double min_elevation_deg = -10.0;
+    std::uint32_t depth = 12;
+    double threshold = 1e-4;
+    bool dispersion = false;
+    unsigned jobs = 0;  // 0: every core
+};
+
+struct VerifyOptions {
+    std::string database;
+    std::uint32_t samples = 2000;
+    std::uint64_t seed = 1;
+};
+
+struct InspectOptions {
+    std::string database;
+    double azimuth_deg = 0.0;
+    double elevation_deg = 90.0;
+    int level = -1;  // -1: the finest
+    std::string prefix;
+};
+
+int run_build(const BuildOptions& options);
+int run_info(const std::string& database);
+int run_verify(const VerifyOptions& options);
+int run_inspect(const InspectOptions& options);
+
+// "gemtables: <message>" on stderr; returns the failure exit status.
+int fail(const std::string& message);
+
+}  // namespace gem::tables

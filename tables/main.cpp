@@ -1,0 +1,95 @@
+// gemtables: the pre-computation stage. Builds a stone's ray-table database, and checks,
+// describes and pictures existing ones. A thin main: the work is in the engine and the
+// command files beside this one.
+#include <cstdio>
+
+#include <CLI/CLI.hpp>
+
+#include "commands.hpp"
+
+namespace {
+
+// Sides must ascend: the cache shows a coarser level while a finer one decodes.
+std::string check_levels(const std::vector<std::uint32_t>& levels) {
+    for (std::size_t i = 0; i < levels.size(); ++i) {
+        if (levels[i] < 1 || levels[i] > 8192) return "sides must lie in 1 .. 8192";
+        if (i > 0 && levels[i] <= levels[i - 1]) return "sides must ascend, e.g. 128,256,512";
+    }
+    if (levels.empty() || levels.size() > 16) return "give 1 to 16 sides";
+    return {};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    using namespace gem::tables;
+    CLI::App app{
+        "gemtables: builds, verifies, describes and pictures gemstone ray-table "
+        "databases (.gemdb)."};
+    app.require_subcommand(1);
+
+    BuildOptions build;
+    CLI::App* b = app.add_subcommand("build", "trace every stored view of a stone into a database");
+    b->add_option("stone", build.stone_file, "stone description (TOML, config/stones/README.md)")
+        ->required();
+    b->add_option("-o,--out", build.out, "database to write (.gemdb)")->required();
+    b->add_option("--levels", build.levels, "image sides per view, ascending")
+        ->delimiter(',')
+        ->capture_default_str();
+    b->add_option("--spacing", build.spacing_deg, "angle between stored views (degrees)")
+        ->check(CLI::Range(0.05, 90.0))
+        ->capture_default_str();
+    b->add_option("--min-elevation", build.min_elevation_deg,
+                  "lowest view elevation stored (degrees; -90 = whole sphere)")
+        ->check(CLI::Range(-90.0, 89.0))
+        ->capture_default_str();
+    b->add_option("--depth", build.depth, "internal ray segments followed")
+        ->check(CLI::Range(0, 1000))
+        ->capture_default_str();
+    b->add_option("--threshold", build.threshold, "exit rays lighter than this are dropped")
+        ->check(CLI::Range(0.0, 1.0))
+        ->capture_default_str();
+    b->add_flag("--dispersion", build.dispersion, "store d(direction)/dn per exit ray (fire)");
+    b->add_option("--jobs", build.jobs, "tracing threads (default: every core)")
+        ->check(CLI::Range(1, 1024));
+
+    std::string info_db;
+    CLI::App* i = app.add_subcommand("info", "header, stone, parameters and sizes of a database");
+    i->add_option("database", info_db, "database (.gemdb)")->required();
+
+    VerifyOptions verify;
+    CLI::App* v = app.add_subcommand(
+        "verify", "check every checksum and re-trace a sample of pixels with the exact tracer");
+    v->add_option("database", verify.database, "database (.gemdb)")->required();
+    v->add_option("--samples", verify.samples, "pixels to re-trace")->capture_default_str();
+    v->add_option("--seed", verify.seed, "random seed of the sample")->capture_default_str();
+
+    InspectOptions inspect;
+    std::vector<double> direction;
+    CLI::App* n = app.add_subcommand("inspect", "one view as PNGs: shaded, and ray-list length");
+    n->add_option("database", inspect.database, "database (.gemdb)")->required();
+    n->add_option("--view-direction", direction, "AZ,EL in degrees (90 elevation = face-up)")
+        ->delimiter(',')
+        ->expected(2)
+        ->required();
+    n->add_option("--level", inspect.level, "level index (default: the finest)")
+        ->check(CLI::NonNegativeNumber);
+    n->add_option("-o,--out", inspect.prefix, "prefix of the PNG files")->required();
+
+    CLI11_PARSE(app, argc, argv);
+
+    if (b->parsed()) {
+        if (const std::string bad = check_levels(build.levels); !bad.empty()) {
+            return fail("--levels: " + bad);
+        }
+        return run_build(build);
+    }
+    if (i->parsed()) return run_info(info_db);
+    if (v->parsed()) return run_verify(verify);
+    inspect.azimuth_deg = direction[0];
+    inspect.elevation_deg = direction[1];
+    if (inspect.elevation_deg < -90.0 || inspect.elevation_deg > 90.0) {
+        return fail("--view-direction: the elevation must lie in -90 .. 90 degrees");
+    }
+    return run_inspect(inspect);
+}

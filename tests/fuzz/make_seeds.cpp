@@ -1,0 +1,130 @@
+// Writes the fuzz seed corpus: a tiny valid database (an octahedron traced for real at 2 and
+// 4 pixels a side over a coarse grid), the same with dispersion, and damaged copies of it —
+// a flipped byte in the header, a section and a payload, truncations, a stripped magic — so
+// the fuzzer starts from inputs that reach every stage of the reader.
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iterator>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "optics/material.hpp"
+#include "tables/writer.hpp"
+#include "trace/tracer.hpp"
+
+namespace {
+
+using Bytes = std::vector<char>;
+
+// A regular octahedron of half-diagonal 1.5 mm, vertices on the axes; mirror-symmetric in x.
+gem::Stone octahedron() {
+    const double a = 1.5;
+    gem::Stone s;
+    s.name = "fuzz octahedron";
+    s.vertices = {{a, 0, 0}, {-a, 0, 0}, {0, a, 0}, {0, -a, 0}, {0, 0, a}, {0, 0, -a}};
+    for (int sx : {1, -1}) {
+        for (int sy : {1, -1}) {
+            for (int sz : {1, -1}) {
+                gem::Facet f;
+                f.plane.n = glm::normalize(glm::dvec3(sx, sy, sz));
+                f.plane.d = a / std::sqrt(3.0);
+                const std::uint32_t x = sx > 0 ? 0 : 1, y = sy > 0 ? 2 : 3, z = sz > 0 ? 4 : 5;
+                // (x, y, z) runs counter-clockwise seen from outside when sx·sy·sz > 0.
+                f.loop = sx * sy * sz > 0 ? std::vector<std::uint32_t>{x, y, z}
+                                          : std::vector<std::uint32_t>{x, z, y};
+                f.kind = sy > 0 ? gem::FacetKind::crown : gem::FacetKind::pavilion;
+                f.name = "face";
+                const auto index = static_cast<std::uint32_t>(s.facets.size());
+                s.triangles.push_back({{f.loop[0], f.loop[1], f.loop[2]}, index});
+                s.facets.push_back(f);
+            }
+        }
+    }
+    s.symmetry = {glm::dmat3(1.0), glm::dmat3{{-1, 0, 0}, {0, 1, 0}, {0, 0, 1}}};
+    s.material = gem::find_material("diamond").value();
+    return s;
+}
+
+bool write_valid(const std::filesystem::path& path, bool dispersion) {
+    const gem::Stone stone = octahedron();
+    gem::CameraModel camera;
+    camera.field_mm = 3.5;
+    gem::BuildParams params;
+    params.levels = {2, 4};
+    params.grid.spacing_rad = 0.9;
+    params.dispersion = dispersion;
+    auto built = gem::ViewGrid::build(params.grid, stone.symmetry);
+    if (!built) {
+        std::fprintf(stderr, "gem_fuzz_seeds: %s\n", built.error().c_str());
+        return false;
+    }
+    const gem::ViewGrid& grid = built.value();
+    const gem::Tracer tracer(stone);
+    gem::TraceViewFn trace = [&](std::uint32_t view, std::uint32_t level) {
+        const std::uint32_t side = params.levels[level];
+        std::vector<gem::RayList> lists(side * side);
+        for (std::uint32_t p = 0; p < side * side; ++p) {
+            const gem::Ray ray =
+                gem::camera_ray(camera, grid.basis(view),
+                                gem::pixel_centre(p % side, p / side, side, camera.field_mm));
+            tracer.trace(ray, stone.material.index(), gem::TraceSettings{}, lists[p]);
+        }
+        return lists;
+    };
+    gem::TraceDerivativesFn derivatives = [](std::uint32_t, std::uint32_t,
+                                             const std::vector<gem::RayList>& lists) {
+        std::vector<glm::dvec3> d;
+        for (const gem::RayList& list : lists)
+            d.resize(d.size() + list.exits.size(), {0.1, -0.2, 0.3});
+        return d;
+    };
+    auto written = gem::write_database(path, stone, camera, params, grid, trace,
+                                       dispersion ? derivatives : gem::TraceDerivativesFn{});
+    if (!written) std::fprintf(stderr, "gem_fuzz_seeds: %s\n", written.error().c_str());
+    return written.ok();
+}
+
+Bytes read(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    return {std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
+}
+
+void write(const std::filesystem::path& path, const Bytes& bytes) {
+    std::ofstream out(path, std::ios::binary | std::ios::trunc);
+    out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    if (argc != 2) {
+        std::fprintf(stderr, "usage: gem_fuzz_seeds DIR\n");
+        return 2;
+    }
+    const std::filesystem::path dir = argv[1];
+    std::filesystem::create_directories(dir);
+    if (!write_valid(dir / "valid.gemdb", false)) return 1;
+    if (!write_valid(dir / "valid_dispersion.gemdb", true)) return 1;
+    const Bytes valid = read(dir / "valid.gemdb");
+    if (valid.size() < 400) return 1;
+
+    auto flipped = [&](std::size_t at) {
+        Bytes b = valid;
+        b[at] = static_cast<char>(b[at] ^ 0x5A);
+        return b;
+    };
+    write(dir / "header_flip.gemdb", flipped(20));
+    write(dir / "section_flip.gemdb", flipped(300));
+    write(dir / "payload_flip.gemdb", flipped(valid.size() - 3));
+    write(dir / "truncated_tail.gemdb", Bytes(valid.begin(), valid.end() - 7));
+    write(dir / "truncated_half.gemdb", Bytes(valid.begin(), valid.begin() + valid.size() / 2));
+    write(dir / "magic_only.gemdb", Bytes(valid.begin(), valid.begin() + 8));
+    Bytes stripped = valid;
+    stripped[0] = static_cast<char>(stripped[0] & 0x7F);
+    write(dir / "magic_stripped.gemdb", stripped);
+    std::printf("gem_fuzz_seeds: wrote 9 seeds to %s\n", dir.c_str());
+    return 0;
+}

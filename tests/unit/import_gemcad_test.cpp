@@ -1,0 +1,243 @@
+// GemCad design import: a square step written by hand (volume by hand) and the real
+// Standard Round Brilliant from the GemCad user's guide (shared data, SRB.asc).
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <sstream>
+#include <string>
+
+#include "geometry/validate.hpp"
+#include "import/load_model.hpp"
+
+namespace gem {
+namespace {
+
+constexpr double kDeg = std::numbers::pi / 180.0;
+
+std::filesystem::path model(const std::string& name) {
+    return std::filesystem::path(GEM_FIXTURES_DIR) / "models" / name;
+}
+std::filesystem::path srb() {
+    return std::filesystem::path(GEM_SHARED_DATA_DIR) / "gemcad" / "SRB.asc";
+}
+
+bool contains(const std::string& text, const std::string& part) {
+    return text.find(part) != std::string::npos;
+}
+
+std::string read_text(const std::filesystem::path& path) {
+    std::ifstream in(path, std::ios::binary);
+    std::ostringstream s;
+    s << in.rdbuf();
+    return s.str();
+}
+
+std::filesystem::path write_artifact(const std::string& name, const std::string& text) {
+    const auto path = std::filesystem::path(GEM_ARTIFACT_DIR) / "import" / name;
+    std::filesystem::create_directories(path.parent_path());
+    std::ofstream(path, std::ios::binary) << text;
+    return path;
+}
+
+int count_kind(const Stone& s, FacetKind kind) {
+    int n = 0;
+    for (const Facet& f : s.facets) n += f.kind == kind ? 1 : 0;
+    return n;
+}
+
+// The square step (see the fixture's H lines): girdle prism 2x2x0.4 = 1.6; crown frustum from
+// half-width 1 to 0.6 over 0.4: 0.4/3·(4 + 1.44 + √(4·1.44)); pavilion frustum from half-width 1
+// to 0.2 over 0.8: 0.8/3·(4 + 0.16 + √(4·0.16)). Total 3.968.
+constexpr double kSquareStepVolume =
+    1.6 + 0.4 / 3.0 * (4.0 + 1.44 + 2.4) + 0.8 / 3.0 * (4.0 + 0.16 + 0.8);
+
+TEST(ImportGemcad, SquareStepByHand) {
+    auto result = load_gemcad(model("square_step.asc"));
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Stone& s = result.value();
+    EXPECT_EQ(s.name, "Square step test design");
+    ASSERT_EQ(s.facets.size(), 14u);
+    EXPECT_EQ(count_kind(s, FacetKind::girdle), 4);
+    EXPECT_EQ(count_kind(s, FacetKind::crown), 4);
+    EXPECT_EQ(count_kind(s, FacetKind::table), 1);
+    EXPECT_EQ(count_kind(s, FacetKind::pavilion), 4);  // the fourth is on a continuation line
+    EXPECT_EQ(count_kind(s, FacetKind::culet), 1);     // written "-0.000000"
+    EXPECT_EQ(gemmological_facet_count(s), 10);
+    EXPECT_EQ(s.vertices.size(), 16u);
+    EXPECT_TRUE(s.convex);
+    const SolidReport r = check_solid(s);
+    EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
+    EXPECT_NEAR(r.volume, kSquareStepVolume, 1e-9);
+    EXPECT_EQ(s.symmetry.size(), 8u);  // y 4 y: four rotations and four mirrors
+    EXPECT_TRUE(symmetry_holds(s));
+    EXPECT_EQ(s.material.name, "GemCad design index 1.76");
+    EXPECT_DOUBLE_EQ(s.material.index(), 1.76);
+    for (const Facet& f : s.facets) {
+        const char* expected = f.kind == FacetKind::girdle     ? "G"
+                               : f.kind == FacetKind::crown    ? "C"
+                               : f.kind == FacetKind::table    ? "T"
+                               : f.kind == FacetKind::pavilion ? "P"
+                                                               : "K";
+        EXPECT_EQ(f.name, expected);
+        for (std::uint32_t i : f.loop) {
+            if (f.kind == FacetKind::table) {
+                EXPECT_NEAR(s.vertices[i].y, 0.7, 1e-12);
+            }
+            if (f.kind == FacetKind::culet) {
+                EXPECT_NEAR(s.vertices[i].y, -0.9, 1e-12);
+            }
+        }
+    }
+}
+
+TEST(ImportGemcad, CuletWrittenAsZeroAngleWithNegativeDistance) {
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("a -0.000000 0.90000000"), 22, "a 0.000000 -0.90000000");
+    auto result = load_gemcad(write_artifact("culet_negative_distance.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    EXPECT_EQ(count_kind(result.value(), FacetKind::culet), 1);
+    EXPECT_EQ(count_kind(result.value(), FacetKind::table), 1);
+    EXPECT_NEAR(check_solid(result.value()).volume, kSquareStepVolume, 1e-9);
+}
+
+TEST(ImportGemcad, AzimuthRunsFromXTowardZ) {
+    // One crown facet at index 8 of 96: azimuth 30°, so its normal leans toward +x and +z
+    // with n.z / n.x = tan 30°.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("y 4 y"), 5, "y 1 n");
+    text.replace(text.find("0.919238815542512 0 n C 24 48 72"), 32, "0.919238815542512 8 n C");
+    auto result = load_gemcad(write_artifact("one_crown_facet.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    ASSERT_EQ(count_kind(result.value(), FacetKind::crown), 1);
+    for (const Facet& f : result.value().facets) {
+        if (f.kind != FacetKind::crown) continue;
+        EXPECT_NEAR(f.plane.n.x, std::sin(45 * kDeg) * std::cos(30 * kDeg), 1e-12);
+        EXPECT_NEAR(f.plane.n.z, std::sin(45 * kDeg) * std::sin(30 * kDeg), 1e-12);
+        EXPECT_NEAR(f.plane.n.y, std::cos(45 * kDeg), 1e-12);
+    }
+    EXPECT_EQ(result.value().symmetry.size(), 1u);
+}
+
+TEST(ImportGemcad, ClaimedSymmetryTheFacetsLackIsDropped) {
+    // "y 4 y" claims 8 symmetries, but with a single crown facet at index 0 (azimuth 0, normal
+    // in the xy plane) only the identity and the mirror z -> -z still map the stone onto itself.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("0.919238815542512 0 n C 24 48 72"), 32, "0.919238815542512 0 n C");
+    auto result = load_gemcad(write_artifact("one_crown_facet_symmetric.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    const auto& g = result.value().symmetry;
+    ASSERT_EQ(g.size(), 2u);
+    EXPECT_EQ(g[0], glm::dmat3(1.0));
+    const glm::dvec3 p = g[1] * glm::dvec3(0.3, 0.2, 0.5);
+    EXPECT_NEAR(p.x, 0.3, 1e-12);
+    EXPECT_NEAR(p.y, 0.2, 1e-12);
+    EXPECT_NEAR(p.z, -0.5, 1e-12);
+    EXPECT_TRUE(symmetry_holds(result.value()));
+}
+
+TEST(ImportGemcad, ReferenceAngleTurnsTheDesign) {
+    // With a 45° reference angle the square girdle's corners lie on the axes, √2 out.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("g 96 0.0"), 8, "g 96 45.0");
+    auto result = load_gemcad(write_artifact("turned_square_step.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    double max_x = 0.0;
+    for (const auto& v : result.value().vertices) max_x = std::max(max_x, v.x);
+    EXPECT_NEAR(max_x, std::sqrt(2.0), 1e-12);
+    EXPECT_TRUE(symmetry_holds(result.value()));  // the mirror turns with the design
+}
+
+TEST(ImportGemcad, StandardRoundBrilliantFromTheUsersGuide) {
+    auto result = load_gemcad(srb());
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Stone& s = result.value();
+    EXPECT_EQ(s.name, "Standard Round Brilliant");
+    EXPECT_EQ(gemmological_facet_count(s), 57);
+    EXPECT_EQ(count_kind(s, FacetKind::table) + count_kind(s, FacetKind::crown), 33);
+    EXPECT_EQ(count_kind(s, FacetKind::pavilion) + count_kind(s, FacetKind::culet), 24);
+    EXPECT_EQ(count_kind(s, FacetKind::girdle), 16);
+    EXPECT_EQ(s.symmetry.size(), 16u);
+    EXPECT_TRUE(symmetry_holds(s));
+    EXPECT_DOUBLE_EQ(s.material.index(), 1.54);
+    EXPECT_TRUE(s.convex);
+    const SolidReport r = check_solid(s);
+    EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
+
+    // Heights from the tier lines by hand. A crown or pavilion facet at the same index as a
+    // girdle facet meets it in a horizontal edge where sin|a|·r ± cos a·y = d, r = 1.02653281:
+    const double r_girdle = 1.02653281;
+    const double girdle_top = (0.68444470 - std::sin(34 * kDeg) * r_girdle) / std::cos(34 * kDeg);
+    const double girdle_bottom =
+        (std::sin(42.5 * kDeg) * r_girdle - 0.61819401) / std::cos(42.5 * kDeg);
+    const double table = 0.36450932;
+    const double culet = -0.61701256 / std::cos(41.5 * kDeg);  // the eight mains meet on the axis
+    double y_lo = 1e9, y_hi = -1e9, g_lo = 1e9, g_hi = -1e9;
+    for (const auto& v : s.vertices) {
+        y_lo = std::min(y_lo, v.y);
+        y_hi = std::max(y_hi, v.y);
+    }
+    for (const Facet& f : s.facets) {
+        if (f.kind != FacetKind::girdle) continue;
+        for (std::uint32_t i : f.loop) {
+            g_lo = std::min(g_lo, s.vertices[i].y);
+            g_hi = std::max(g_hi, s.vertices[i].y);
+        }
+    }
+    EXPECT_NEAR(y_hi, table, 1e-9);
+    EXPECT_NEAR(y_lo, culet, 1e-9);
+    EXPECT_NEAR(g_hi, girdle_top, 1e-9);
+    EXPECT_NEAR(g_lo, girdle_bottom, 1e-9);
+}
+
+TEST(ImportGemcad, UnknownLineNamesFileAndLine) {
+    auto result = load_gemcad(model("bad/unknown_line.asc"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "unknown_line.asc:5: unknown line 'x'")) << result.error();
+}
+
+TEST(ImportGemcad, IndicesAfterAFootnoteDoNotContinueATier) {
+    // The fixture has 14 lines; the stray indices are line 15.
+    const std::string text = read_text(model("square_step.asc")) + "12 24\n";
+    auto result = load_gemcad(write_artifact("stray_indices.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "stray_indices.asc:15: unknown line '12'"))
+        << result.error();
+}
+
+TEST(ImportGemcad, MalformedAngleNamesLineAndToken) {
+    auto result = load_gemcad(model("bad/bad_angle.asc"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "bad_angle.asc:7: tier angle '4x.0' is not a number"))
+        << result.error();
+}
+
+TEST(ImportGemcad, MalformedIndexNamesLineAndToken) {
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("0 n C 24 48 72"), 14, "0 n C 24 4B 72");
+    auto result = load_gemcad(write_artifact("bad_index_token.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "bad_index_token.asc:9: tier index '4B' is not a number"))
+        << result.error();
+}
+
+TEST(ImportGemcad, NotAGemcadFileIsAnErrorOnLineOne) {
+    auto result = load_gemcad(model("cube.obj"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "cube.obj:1: not a GemCad design")) << result.error();
+}
+
+TEST(ImportGemcad, FacetThatVanishesIsAnErrorNamingTheFile) {
+    // A table above the crown's apex (y = 1.3) cuts nothing away.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("a 0.000000 0.70000000"), 21, "a 0.000000 1.50000000");
+    auto result = load_gemcad(write_artifact("vanishing_table.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "vanishing_table.asc: ")) << result.error();
+}
+
+}  // namespace
+}  // namespace gem

@@ -1,0 +1,130 @@
+// Environments: uniform colour, equirectangular lookup (texel centres, bilinear blend, poles),
+// image files (PNG decoded from sRGB, Radiance .hdr kept linear) and the studio's character.
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+
+#include <gtest/gtest.h>
+
+#include "render/environment.hpp"
+#include "render/image.hpp"
+
+namespace gem {
+namespace {
+
+constexpr double kPi = 3.14159265358979323846;
+
+// Unit direction at longitude lon (0 = -z, growing toward +x) and latitude lat.
+glm::dvec3 direction(double lon, double lat) {
+    return {std::cos(lat) * std::sin(lon), std::sin(lat), -std::cos(lat) * std::cos(lon)};
+}
+
+void expect_near(const glm::dvec3& a, const glm::dvec3& b, double tol) {
+    EXPECT_NEAR(a.x, b.x, tol);
+    EXPECT_NEAR(a.y, b.y, tol);
+    EXPECT_NEAR(a.z, b.z, tol);
+}
+
+std::filesystem::path scratch(const std::string& name) {
+    const auto dir = std::filesystem::path(GEM_ARTIFACT_DIR) / "render_environment_test";
+    std::filesystem::create_directories(dir);
+    return dir / name;
+}
+
+TEST(RenderEnvironment, UniformIsTheSameEverywhere) {
+    const Environment env = Environment::uniform({0.2, 0.4, 0.8});
+    for (const glm::dvec3& d : {glm::dvec3(0, 1, 0), glm::dvec3(0.6, 0, -0.8)}) {
+        expect_near(env.radiance(d), {0.2, 0.4, 0.8}, 0.0);
+    }
+}
+
+// A 4 × 2 map: texel (i, j) centres at longitude (i + 0.5)/4 · 2π − π and latitude
+// π/2 − (j + 0.5)/2 · π, i.e. ±45°.
+Environment four_by_two() {
+    std::vector<glm::vec3> px;
+    for (int j = 0; j < 2; ++j) {
+        for (int i = 0; i < 4; ++i) px.emplace_back(float(i), float(j), 1.0f);
+    }
+    return Environment::from_pixels(4, 2, px);
+}
+
+TEST(RenderEnvironment, EquirectangularTexelCentresAndBlends) {
+    const Environment env = four_by_two();
+    const double q = kPi / 4.0;
+    // Centre of texel (1, 0): longitude -π/4, latitude +π/4.
+    expect_near(env.radiance(direction(-q, q)), {1.0, 0.0, 1.0}, 1e-9);
+    // Centre of texel (2, 1): longitude +π/4, latitude -π/4.
+    expect_near(env.radiance(direction(q, -q)), {2.0, 1.0, 1.0}, 1e-9);
+    // Straight at -z on the equator: halfway between columns 1 and 2 and rows 0 and 1.
+    expect_near(env.radiance({0.0, 0.0, -1.0}), {1.5, 0.5, 1.0}, 1e-9);
+    // Longitude π wraps: halfway between column 3 and column 0.
+    expect_near(env.radiance(direction(kPi - 1e-12, q)), {1.5, 0.0, 1.0}, 1e-6);
+    // Above the top row's centres the rows clamp to the top row.
+    expect_near(env.radiance(direction(-q, 1.4)), {1.0, 0.0, 1.0}, 1e-9);
+}
+
+TEST(RenderEnvironment, PngIsDecodedFromSrgb) {
+    Image img(4, 2, glm::vec4(0.18f, 0.5f, 1.0f, 1.0f));
+    const auto path = scratch("env.png");
+    ASSERT_TRUE(write_png(img, path).ok());
+    Result<Environment> env = Environment::load_image(path);
+    ASSERT_TRUE(env.ok()) << env.error();
+    // 8-bit quantisation of sRGB moves the value by at most half a code: < 0.3 % here.
+    expect_near(env.value().radiance({0, 0, -1}), {0.18, 0.5, 1.0}, 0.003);
+}
+
+TEST(RenderEnvironment, RadianceHdrIsLinear) {
+    // Radiance RGBE, flat scanlines (width < 8 is never run-length encoded): (128,128,128,129)
+    // is 128/256 · 2^(129-128) = 1.0 and (192,64,128,128) is (0.75, 0.25, 0.5).
+    const auto path = scratch("env.hdr");
+    {
+        std::ofstream out(path, std::ios::binary);
+        out << "#?RADIANCE\nFORMAT=32-bit_rle_rgbe\n\n-Y 2 +X 2\n";
+        const unsigned char px[16] = {128, 128, 128, 129, 128, 128, 128, 129,
+                                      192, 64,  128, 128, 192, 64,  128, 128};
+        out.write(reinterpret_cast<const char*>(px), 16);
+    }
+    Result<Environment> env = Environment::load_image(path);
+    ASSERT_TRUE(env.ok()) << env.error();
+    expect_near(env.value().radiance({0, 1, 0}), {1.0, 1.0, 1.0}, 1e-6);
+    expect_near(env.value().radiance({0, -1, 0}), {0.75, 0.25, 0.5}, 1e-6);
+}
+
+TEST(RenderEnvironment, BadImageIsAnErrorNamingTheFile) {
+    const auto path = scratch("not-an-image.png");
+    std::ofstream(path) << "hello";
+    Result<Environment> env = Environment::load_image(path);
+    ASSERT_FALSE(env.ok());
+    EXPECT_NE(env.error().find("not-an-image.png"), std::string::npos) << env.error();
+    Result<Environment> missing = Environment::load_image(scratch("missing.hdr"));
+    ASSERT_FALSE(missing.ok());
+    EXPECT_NE(missing.error().find("missing.hdr"), std::string::npos) << missing.error();
+}
+
+TEST(RenderEnvironment, StudioIsDarkBelowWithBrightLightsAbove) {
+    const Environment env = Environment::studio();
+    double brightest_above = 0.0;
+    double brightest_below = 0.0;
+    for (int i = 0; i < 72; ++i) {
+        for (int j = 1; j < 18; ++j) {
+            const double lon = i * kPi / 36.0;
+            const double lat = j * kPi / 36.0;  // 5° .. 85°
+            const glm::dvec3 up = env.radiance(direction(lon, lat));
+            const glm::dvec3 down = env.radiance(direction(lon, -lat));
+            for (const glm::dvec3& c : {up, down}) {
+                ASSERT_TRUE(std::isfinite(c.x) && std::isfinite(c.y) && std::isfinite(c.z));
+                ASSERT_GE(std::min({c.x, c.y, c.z}), 0.0);
+            }
+            brightest_above = std::max(brightest_above, up.y);
+            brightest_below = std::max(brightest_below, down.y);
+        }
+    }
+    EXPECT_GT(brightest_above, 2.0);   // softboxes
+    EXPECT_LT(brightest_below, 0.05);  // the counter
+    // Deterministic: the same direction gives the same value.
+    EXPECT_EQ(env.radiance(direction(0.3, 0.9)),
+              Environment::studio().radiance(direction(0.3, 0.9)));
+}
+
+}  // namespace
+}  // namespace gem

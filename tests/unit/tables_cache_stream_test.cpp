@@ -1,0 +1,191 @@
+// The view cache as a frame sees it: acquire() answers at once even while the disk is slow,
+// with the nearest view already resident, and prefetch decodes the views ahead of a turning
+// camera, the coarse level first. Also the cache over a real (small) database.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "tables/reader.hpp"
+#include "tables/view_cache.hpp"
+#include "tables_cache_fake.hpp"
+#include "tables_test_support.hpp"
+
+namespace gem {
+namespace {
+
+using cache_test::FakeSource;
+using namespace std::chrono_literals;
+using Clock = std::chrono::steady_clock;
+
+// A direction by azimuth (about +y from +z toward +x) and elevation, written out directly.
+glm::dvec3 from_angles(double azimuth, double elevation) {
+    return {std::cos(elevation) * std::sin(azimuth), std::sin(elevation),
+            std::cos(elevation) * std::cos(azimuth)};
+}
+
+TEST(TablesCacheStream, ColdAcquireReturnsNothingAtOnce) {
+    auto source = std::make_shared<FakeSource>(0.3, 2, 100);
+    source->delay = 300ms;
+    ViewCache cache(source);
+    const auto start = Clock::now();
+    const AcquiredView got = cache.acquire(from_angles(0.2, 0.4), 1);
+    EXPECT_LT(Clock::now() - start, 50ms);
+    EXPECT_EQ(got.view, nullptr);
+    EXPECT_FALSE(got.exact);
+    EXPECT_EQ(cache.stats().misses, 1u);
+}
+
+TEST(TablesCacheStream, AcquireNeverWaitsForASlowDecode) {
+    auto source = std::make_shared<FakeSource>(0.3, 1, 100);
+    source->delay = 300ms;
+    ViewCache cache(source);
+    const ViewGrid& grid = source->grid();
+    const std::uint32_t a = grid.nearest(from_angles(0.0, 0.5)).view;
+    (void)cache.acquire(grid.direction(a), 0);
+    ASSERT_TRUE(cache.wait_idle(5s));
+
+    // Turn 0.6 rad in azimuth (0.53 rad of arc), onto another view; while its 300 ms decode
+    // runs, every frame gets view a at once.
+    const glm::dvec3 asked = from_angles(0.6, 0.5);
+    const std::uint32_t b = grid.nearest(asked).view;
+    ASSERT_NE(a, b);
+    for (int frame = 0; frame < 5; ++frame) {
+        const auto start = Clock::now();
+        const AcquiredView got = cache.acquire(asked, 0);
+        EXPECT_LT(Clock::now() - start, 50ms) << frame;
+        ASSERT_NE(got.view, nullptr);
+        EXPECT_EQ(got.match.view, a);
+        EXPECT_FALSE(got.exact);
+        // The group is the identity alone, so the offset is the plain angle between them.
+        EXPECT_NEAR(got.match.angle, std::acos(glm::dot(asked, grid.direction(a))), 1e-9);
+        std::this_thread::sleep_for(10ms);
+    }
+    ASSERT_TRUE(cache.wait_idle(5s));
+    const AcquiredView got = cache.acquire(asked, 0);
+    EXPECT_TRUE(got.exact);
+    EXPECT_EQ(got.match.view, b);
+    EXPECT_EQ(got.view->weight.front(), static_cast<float>(b));
+    EXPECT_EQ(cache.stats().decodes, 2u);
+}
+
+TEST(TablesCacheStream, WantedLevelIsPreferredThenTheCoarserOne) {
+    auto source = std::make_shared<FakeSource>(0.3, 3, 100);
+    ViewCache cache(source);
+    const glm::dvec3 asked = source->grid().direction(4);
+    (void)cache.acquire(asked, 1);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    // Decoded: the coarse level first, then the wanted one; never the finer one.
+    const auto order = source->decoded();
+    ASSERT_EQ(order.size(), 2u);
+    EXPECT_EQ(order[0], std::make_pair(4u, 0u));
+    EXPECT_EQ(order[1], std::make_pair(4u, 1u));
+    const AcquiredView exact = cache.acquire(asked, 1);
+    EXPECT_TRUE(exact.exact);
+    EXPECT_EQ(exact.level, 1u);
+    EXPECT_EQ(exact.view->side, 2u);  // the fake's side is level + 1
+    // Asking for level 2 shows level 1 meanwhile.
+    const AcquiredView finer = cache.acquire(asked, 2);
+    EXPECT_FALSE(finer.exact);
+    EXPECT_EQ(finer.level, 1u);
+    EXPECT_EQ(finer.match.view, 4u);
+}
+
+TEST(TablesCacheStream, PrefetchDecodesTheViewsAheadCoarseFirst) {
+    auto source = std::make_shared<FakeSource>(0.3, 2, 100);
+    ViewCacheOptions options;
+    options.prefetch_horizon_s = 0.5;
+    ViewCache cache(source, options);
+    const ViewGrid& grid = source->grid();
+    // Turning about +y at 1.2 rad/s moves the azimuth up by 0.6 rad in the horizon.
+    const double elevation = 0.3;
+    const glm::dvec3 here = from_angles(0.0, elevation);
+    const std::size_t queued = cache.prefetch(here, {0.0, 1.2, 0.0}, 1);
+    EXPECT_GT(queued, 0u);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    const auto order = source->decoded();
+    ASSERT_EQ(order.size(), queued);
+
+    // The views nearest to points half-way and at the end of the predicted arc are in, at
+    // both levels; so is nothing behind the camera.
+    for (double azimuth : {0.3, 0.6}) {
+        const std::uint32_t v = grid.nearest(from_angles(azimuth, elevation)).view;
+        EXPECT_TRUE(cache.resident(v, 0)) << azimuth;
+        EXPECT_TRUE(cache.resident(v, 1)) << azimuth;
+    }
+    for (double azimuth : {-0.3, -0.6}) {
+        const std::uint32_t v = grid.nearest(from_angles(azimuth, elevation)).view;
+        EXPECT_FALSE(cache.resident(v, 0)) << azimuth;
+    }
+    // Every prefetched view lies ahead, within the arc plus half a grid cell or so.
+    for (const auto& [view, level] : order) {
+        const glm::dvec3 d = grid.direction(view);
+        const double azimuth = std::atan2(d.x, d.z);
+        EXPECT_GT(azimuth, 0.0) << view;
+        EXPECT_LT(azimuth, 0.6 + 0.3) << view;
+    }
+    // Coarse first: every level-0 decode comes before every level-1 decode.
+    std::size_t last_coarse = 0;
+    std::size_t first_fine = order.size();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (order[i].second == 0) last_coarse = i;
+        if (order[i].second == 1) first_fine = std::min(first_fine, i);
+    }
+    EXPECT_LT(last_coarse, first_fine);
+    // Nearest in time first: the first decode is the first view met along the arc.
+    std::uint32_t first_met = grid.nearest(here).view;
+    for (int i = 1; i <= 600 && first_met == grid.nearest(here).view; ++i) {
+        first_met = grid.nearest(from_angles(0.6 * i / 600.0, elevation)).view;
+    }
+    EXPECT_EQ(order.front().first, first_met);
+}
+
+TEST(TablesCacheStream, DemandOutranksPrefetch) {
+    auto source = std::make_shared<FakeSource>(0.3, 1, 100);
+    source->delay = 30ms;
+    ViewCache cache(source);
+    const ViewGrid& grid = source->grid();
+    (void)cache.prefetch(from_angles(0.0, 0.0), {0.0, 3.0, 0.0}, 0);
+    const glm::dvec3 asked = from_angles(3.0, -0.8);  // far from the prefetched arc
+    (void)cache.acquire(asked, 0);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    const auto order = source->decoded();
+    ASSERT_GE(order.size(), 3u);
+    // At most the prefetch already in flight runs before the frame's request.
+    const std::uint32_t wanted = grid.nearest(asked).view;
+    EXPECT_TRUE(order[0].first == wanted || order[1].first == wanted);
+}
+
+TEST(TablesCacheStream, ServesARealDatabase) {
+    const auto path = tables_test::artifact_dir("cache") / "small.gemdb";
+    const auto small = tables_test::small_database(false);
+    ASSERT_TRUE(tables_test::write_small(path, small).ok());
+    auto db = Database::open(path);
+    ASSERT_TRUE(db.ok()) << db.error();
+    auto shared = std::make_shared<const Database>(std::move(db).value());
+    ViewCache cache(std::make_shared<DatabaseViewSource>(shared));
+    const glm::dvec3 asked = from_angles(0.4, 0.2);
+    const ViewMatch match = shared->grid().nearest(asked);
+    (void)cache.acquire(asked, 1);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    const AcquiredView got = cache.acquire(asked, 1);
+    ASSERT_TRUE(got.exact);
+    EXPECT_EQ(got.match.view, match.view);
+    EXPECT_EQ(got.match.symmetry, match.symmetry);
+    // Same arrays as a direct decode; the counts themselves come from the stand-in tracer.
+    const DecodedView direct = shared->decode(match.view, 1).value();
+    EXPECT_EQ(got.view->side, 16u);
+    EXPECT_EQ(got.view->ray_count, direct.ray_count);
+    EXPECT_EQ(got.view->weight, direct.weight);
+    std::size_t expected_hits = 0;
+    const auto lists = tables_test::random_lists(tables_test::chunk_seed(match.view, 1), 16);
+    for (const RayList& list : lists) expected_hits += list.hit;
+    std::size_t hits = 0;
+    for (std::uint16_t c : got.view->ray_count) hits += c > 0;
+    EXPECT_EQ(hits, expected_hits);
+}
+
+}  // namespace
+}  // namespace gem
