@@ -68,7 +68,7 @@ TEST(GeometryCutParams, OutOfRangeNamesTheParameter) {
     p.crown_angle_deg = 60.0;
     expect_rejected(p, "crown_angle_deg");
     p = base;
-    p.pavilion_angle_deg = 30.0;
+    p.pavilion_angle_deg = 25.0;
     expect_rejected(p, "pavilion_angle_deg");
     p = base;
     p.girdle_pct = -1.0;

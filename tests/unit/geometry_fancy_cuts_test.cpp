@@ -74,7 +74,7 @@ TEST(GeometryFancyCuts, WidthAndLengthMatchTheParameters) {
         auto stone = make_cut(p, Material{});
         ASSERT_TRUE(stone.ok()) << stone.error();
         const Extent e = extent(stone.value());
-        // The heart's lobes lie across x and its tip toward −z; the others are long along x.
+        // The heart's lobes lie across x and its tip toward +z; the others are long along x.
         const bool heart = want.shape == CutShape::heart;
         const double across = heart ? e.hi.x - e.lo.x : e.hi.z - e.lo.z;
         const double along = heart ? e.hi.z - e.lo.z : e.hi.x - e.lo.x;
@@ -89,16 +89,16 @@ TEST(GeometryFancyCuts, WidthAndLengthMatchTheParameters) {
 TEST(GeometryFancyCuts, ExtremeParametersStayValid) {
     CutParams low;  // every parameter at the bottom of its range
     low.table_pct = 45.0;
-    low.crown_angle_deg = 25.0;
-    low.pavilion_angle_deg = 38.0;
+    low.crown_angle_deg = 20.0;
+    low.pavilion_angle_deg = 30.0;
     low.girdle_pct = 1.0;
     low.star_pct = 35.0;
     low.lower_girdle_pct = 60.0;
     low.culet_pct = 0.0;
     CutParams high;  // and at the top
     high.table_pct = 70.0;
-    high.crown_angle_deg = 42.0;
-    high.pavilion_angle_deg = 44.0;
+    high.crown_angle_deg = 45.0;
+    high.pavilion_angle_deg = 56.0;
     high.girdle_pct = 6.0;
     high.star_pct = 65.0;
     high.lower_girdle_pct = 90.0;
@@ -207,12 +207,12 @@ TEST(GeometryFancyCuts, HeartIsNonConvexWithANotchedTable) {
             concave = concave || f.plane.signed_distance(v) > 1e-6;
     }
     EXPECT_TRUE(concave);
-    // The cleft's apex is on the axis, below the lobes: the outline's top at x = 0 is lower
-    // than the lobes' tops.
+    // The lobes point toward −z (the top of a face-up image) and the tip toward +z. The cleft's
+    // apex is on the axis, short of the lobes: at x = 0 the outline reaches less far toward −z.
     double top_on_axis = -INFINITY, top = -INFINITY;
     for (const glm::dvec3& v : s.vertices) {
-        top = std::max(top, v.z);
-        if (std::abs(v.x) < 1e-9) top_on_axis = std::max(top_on_axis, v.z);
+        top = std::max(top, -v.z);
+        if (std::abs(v.x) < 1e-9) top_on_axis = std::max(top_on_axis, -v.z);
     }
     EXPECT_LT(top_on_axis, top - 0.05 * 6.5);
 }

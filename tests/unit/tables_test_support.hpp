@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include <unistd.h>
+
 #include <glm/glm.hpp>
 
 #include "geometry/stone.hpp"
@@ -165,8 +167,11 @@ inline Result<WriteSummary> write_small(const std::filesystem::path& path, const
                           db.params.dispersion ? derivatives : TraceDerivativesFn{}, options);
 }
 
+// CTest runs tests as separate processes in parallel; the process id keeps one test from
+// rewriting a file that another has memory-mapped (which would end it with SIGBUS).
 inline std::filesystem::path artifact_dir(const std::string& name) {
-    const std::filesystem::path dir = std::filesystem::path(GEM_ARTIFACT_DIR) / "tables" / name;
+    const std::filesystem::path dir = std::filesystem::path(GEM_ARTIFACT_DIR) / "tables" /
+                                      (name + "-" + std::to_string(::getpid()));
     std::filesystem::create_directories(dir);
     return dir;
 }

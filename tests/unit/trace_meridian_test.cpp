@@ -45,39 +45,16 @@ struct MeridianResult {
     Stone stone;
 };
 
-// A simple brilliant for pavilion angles make_cut declines (it accepts 38°–44°): table, 8
-// bezels, 8 pavilion mains meeting in a pointed culet and 16 girdle facets, with the default
-// proportions. In the meridian plane of a main it is the same section as the full brilliant.
-Stone simple_brilliant(const CutParams& params) {
-    const double r = params.width_mm / 2.0;
-    const double g = params.girdle_pct / 100.0 * params.width_mm;
-    const double c = params.crown_angle_deg * kDeg, p = params.pavilion_angle_deg * kDeg;
-    const double table_y = g / 2.0 + (1.0 - params.table_pct / 100.0) * r * std::tan(c);
-    std::vector<FacetPlane> planes{{{{0, 1, 0}, table_y}, FacetKind::table, "table"}};
-    for (int k = 0; k < 8; ++k) {
-        const double a = k * std::numbers::pi / 4.0;
-        const glm::dvec3 crown_n{std::sin(c) * std::cos(a), std::cos(c), std::sin(c) * std::sin(a)};
-        const glm::dvec3 pav_n{std::sin(p) * std::cos(a), -std::cos(p), std::sin(p) * std::sin(a)};
-        const glm::dvec3 top{r * std::cos(a), g / 2.0, r * std::sin(a)};
-        const glm::dvec3 bottom{top.x, -g / 2.0, top.z};
-        planes.push_back({{crown_n, glm::dot(crown_n, top)}, FacetKind::crown, "bezel"});
-        planes.push_back({{pav_n, glm::dot(pav_n, bottom)}, FacetKind::pavilion, "pavilion main"});
-    }
-    for (int k = 0; k < 16; ++k) {
-        const double a = k * std::numbers::pi / 8.0;
-        planes.push_back({{{std::cos(a), 0, std::sin(a)}, r}, FacetKind::girdle, "girdle"});
-    }
-    Result<Stone> stone = stone_from_planes(planes, "simple brilliant");
-    EXPECT_TRUE(stone.ok()) << (stone.ok() ? "" : stone.error());
-    return stone.ok() ? std::move(stone).value() : Stone{};
-}
-
 MeridianResult trace_meridian(double pavilion_deg) {
     CutParams params = default_cut_params(CutShape::round_brilliant);
     params.pavilion_angle_deg = pavilion_deg;
     Result<Stone> built = make_cut(params, test::constant_index_material(kN));
-    if (!built) std::printf("note: %s; using a simple brilliant\n", built.error().c_str());
-    MeridianResult result{{}, built ? std::move(built).value() : simple_brilliant(params)};
+    MeridianResult result;
+    if (!built) {
+        ADD_FAILURE() << built.error();
+        return result;
+    }
+    result.stone = std::move(built).value();
     const Stone& stone = result.stone;
 
     // The pavilion main's azimuth, from its plane.

@@ -157,6 +157,13 @@ Result<Stone> make_heart(const CutParams& params) {
             }
         }
     }
+    // Turn the tip toward +z: face-up, the camera's image has −z at the top, and jewellers
+    // show a heart with its lobes up and its point down. A half turn about y keeps winding.
+    Stone& stone = heart.value();
+    for (glm::dvec3& v : stone.vertices) v = {-v.x, v.y, -v.z};
+    for (Facet& facet : stone.facets) {
+        facet.plane.n = {-facet.plane.n.x, facet.plane.n.y, -facet.plane.n.z};
+    }
     return heart;
 }
 
