@@ -19,16 +19,16 @@ const char* to_string(CutShape shape);
 
 struct CutParams {
     CutShape shape = CutShape::round_brilliant;
-    double width_mm = 6.5;          // girdle diameter (the short side for fancy shapes)
-    double length_to_width = 1.0;   // fancy shapes; 1 for round
-    double table_pct = 53.0;        // table width / girdle width (Tolkowsky 53 %)
-    double crown_angle_deg = 34.5;  // Tolkowsky 34.5°
+    double width_mm = 6.5;              // girdle diameter (the short side for fancy shapes)
+    double length_to_width = 1.0;       // fancy shapes; 1 for round
+    double table_pct = 53.0;            // table width / girdle width (Tolkowsky 53 %)
+    double crown_angle_deg = 34.5;      // Tolkowsky 34.5°
     double pavilion_angle_deg = 40.75;  // Tolkowsky 40.75°
-    double girdle_pct = 2.0;        // girdle thickness / width, at the main facets
-    double star_pct = 50.0;         // star length, share of table edge → girdle
-    double lower_girdle_pct = 75.0; // lower-girdle length, share of girdle → culet
-    double culet_pct = 0.0;         // culet width / girdle width; 0 = pointed (no culet facet)
-    bool faceted_girdle = true;     // faceted girdle, or a smooth (finely polygonised) one
+    double girdle_pct = 2.0;            // girdle thickness / width, at the main facets
+    double star_pct = 50.0;             // star length, share of table edge → girdle
+    double lower_girdle_pct = 75.0;     // lower-girdle length, share of girdle → culet
+    double culet_pct = 0.0;             // culet width / girdle width; 0 = pointed (no culet facet)
+    bool faceted_girdle = true;         // faceted girdle, or a smooth (finely polygonised) one
 };
 
 // The customary parameters for a shape (Tolkowsky for round; typical L/W for fancy shapes).

@@ -9,12 +9,12 @@
 namespace gem {
 
 struct SolidReport {
-    int euler_characteristic = 0;  // V − E + F over facets (2 for a sphere-like solid)
-    bool closed = false;           // every edge shared by exactly two facets, opposite winding
-    bool outward = false;          // facet normals point out (winding agrees with planes)
-    bool planar = false;           // facet vertices lie on their planes
-    double volume = 0.0;           // mm³, from the triangle mesh (divergence theorem)
-    double area = 0.0;             // mm²
+    int euler_characteristic = 0;       // V − E + F over facets (2 for a sphere-like solid)
+    bool closed = false;                // every edge shared by exactly two facets, opposite winding
+    bool outward = false;               // facet normals point out (winding agrees with planes)
+    bool planar = false;                // facet vertices lie on their planes
+    double volume = 0.0;                // mm³, from the triangle mesh (divergence theorem)
+    double area = 0.0;                  // mm²
     std::vector<std::string> problems;  // human-readable, empty when valid
     bool valid() const { return problems.empty(); }
 };

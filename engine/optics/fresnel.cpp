@@ -5,8 +5,7 @@
 
 namespace gem {
 
-std::optional<glm::dvec3> refract(const glm::dvec3& d, const glm::dvec3& n, double n1,
-                                  double n2) {
+std::optional<glm::dvec3> refract(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2) {
     const double eta = n1 / n2;
     const double cos_i = -glm::dot(d, n);
     const double sin2_t = eta * eta * std::max(0.0, 1.0 - cos_i * cos_i);

@@ -18,8 +18,8 @@ inline glm::dvec3 reflect(const glm::dvec3& d, const glm::dvec3& n) {
 std::optional<glm::dvec3> refract(const glm::dvec3& d, const glm::dvec3& n, double n1, double n2);
 
 struct FresnelTerms {
-    double rs = 0.0;  // s-polarised reflectance
-    double rp = 0.0;  // p-polarised reflectance
+    double rs = 0.0;                                        // s-polarised reflectance
+    double rp = 0.0;                                        // p-polarised reflectance
     double reflectance() const { return 0.5 * (rs + rp); }  // unpolarised
     double transmittance() const { return 1.0 - reflectance(); }
 };

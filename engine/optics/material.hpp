@@ -20,7 +20,8 @@ struct Dispersion {
     enum class Kind { constant, cauchy, sellmeier };
     Kind kind = Kind::constant;
     // constant: coef[0] = n. cauchy: n = coef[0] + coef[1] / λ² (λ in µm).
-    // sellmeier: n² = 1 + Σ B_i λ² / (λ² − C_i), coef = {B1, C1, B2, C2, B3, C3}, λ in µm, C in µm².
+    // sellmeier: n² = 1 + Σ B_i λ² / (λ² − C_i), coef = {B1, C1, B2, C2, B3, C3}, λ in µm, C in
+    // µm².
     std::vector<double> coef{1.5};
 
     double index(double wavelength_nm) const;
@@ -32,10 +33,12 @@ struct Dispersion {
 struct Material {
     std::string name = "glass";
     Dispersion dispersion;
-    glm::dvec3 body_colour{1.0};         // the thesis' stone colour I_o (linear RGB, 0..1)
+    glm::dvec3 body_colour{1.0};        // the thesis' stone colour I_o (linear RGB, 0..1)
     glm::dvec3 absorption_per_mm{0.0};  // Beer–Lambert coefficient per linear RGB channel
 
-    double index(double wavelength_nm = kFraunhoferD) const { return dispersion.index(wavelength_nm); }
+    double index(double wavelength_nm = kFraunhoferD) const {
+        return dispersion.index(wavelength_nm);
+    }
 };
 
 // The built-in catalogue of materials (diamond, sapphire, ruby, emerald, garnet, spinel,

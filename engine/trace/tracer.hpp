@@ -16,17 +16,17 @@ enum class WeightModel {
 };
 
 struct TraceSettings {
-    int max_depth = 12;         // internal ray segments followed per branch
-    double min_weight = 1e-4;   // a branch below this weight is cut (its energy is counted)
+    int max_depth = 12;        // internal ray segments followed per branch
+    double min_weight = 1e-4;  // a branch below this weight is cut (its energy is counted)
     WeightModel weights = WeightModel::fresnel;
-    double r_factor = 0.3;      // thesis model: weight kept by an internal reflection
-    double t_factor = 0.7;      // thesis model: weight kept by a refraction out of the stone
+    double r_factor = 0.3;  // thesis model: weight kept by an internal reflection
+    double t_factor = 0.7;  // thesis model: weight kept by a refraction out of the stone
 };
 
 class Intersector;  // convex half-space clipping or triangle BVH, chosen from the stone
 
 class Tracer {
-public:
+  public:
     explicit Tracer(const Stone& stone);
     ~Tracer();
     Tracer(Tracer&&) noexcept;
@@ -38,7 +38,7 @@ public:
 
     const Stone& stone() const { return *stone_; }
 
-private:
+  private:
     const Stone* stone_;
     std::unique_ptr<Intersector> intersector_;
 };

@@ -16,7 +16,7 @@ struct Error {
 
 template <class T>
 class [[nodiscard]] Result {
-public:
+  public:
     Result(T value) : state_(std::move(value)) {}
     Result(Error error) : state_(std::move(error)) {}
 
@@ -40,7 +40,7 @@ public:
         return std::get<1>(state_).message;
     }
 
-private:
+  private:
     std::variant<T, Error> state_;
 };
 
