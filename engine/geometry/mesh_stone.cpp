@@ -43,13 +43,19 @@ struct CellHash {
 // grid of cells `tolerance` wide so only the 27 neighbouring cells need to be searched.
 std::vector<std::uint32_t> weld(const std::vector<glm::dvec3>& positions, double tolerance) {
     std::vector<std::uint32_t> representative(positions.size());
-    const double cell = tolerance > 0.0 ? tolerance : 1.0;
+    // Cells counted from the lower corner of the bounding box keep the integer cell numbers
+    // in range however far the mesh lies from the origin.
+    glm::dvec3 lo(INFINITY), hi(-INFINITY);
+    for (const glm::dvec3& p : positions) lo = glm::min(lo, p), hi = glm::max(hi, p);
+    const double span = std::max({hi.x - lo.x, hi.y - lo.y, hi.z - lo.z, 0.0});
+    const double cell =
+        std::max(tolerance, span * 1e-12) > 0.0 ? std::max(tolerance, span * 1e-12) : 1.0;
     std::unordered_map<CellKey, std::vector<std::uint32_t>, CellHash> grid;
     for (std::uint32_t i = 0; i < positions.size(); ++i) {
         const glm::dvec3& p = positions[i];
-        const CellKey home{static_cast<std::int64_t>(std::floor(p.x / cell)),
-                           static_cast<std::int64_t>(std::floor(p.y / cell)),
-                           static_cast<std::int64_t>(std::floor(p.z / cell))};
+        const glm::dvec3 q = glm::floor((p - lo) / cell);
+        const CellKey home{static_cast<std::int64_t>(q.x), static_cast<std::int64_t>(q.y),
+                           static_cast<std::int64_t>(q.z)};
         std::uint32_t found = i;
         for (int dx = -1; dx <= 1 && found == i; ++dx) {
             for (int dy = -1; dy <= 1 && found == i; ++dy) {
@@ -233,6 +239,12 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
             const std::uint32_t u = owner.at(edge_key(b, a));
             if (u < t) continue;
             const glm::dvec3 m = glm::normalize(area_vector(v, tris[u]));
+            // Neighbours folded flat onto each other (a non-convex polygon fanned from one
+            // corner) would enclose nothing between them: not a solid's surface.
+            if (glm::dot(n, m) < -1.0 + 1e-12) {
+                return Error{"triangles " + std::to_string(t) + " and " + std::to_string(u) +
+                             " fold over each other"};
+            }
             if (glm::dot(n, m) <= 0.0) continue;
             bool coplanar = true;
             for (std::uint32_t w : tris[u]) {

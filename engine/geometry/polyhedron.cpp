@@ -16,6 +16,7 @@
 #include <utility>
 
 #include "geometry/polyhedron.hpp"
+#include "geometry/triangulate.hpp"
 
 #include "geometry/cuts/cut_internal.hpp"
 
@@ -188,73 +189,6 @@ void weld(Stone& stone, double tolerance) {
     stone.vertices = std::move(welded);
 }
 
-// A basis (u, v) of the plane with u × v = n, so counter-clockwise in (u, v) is
-// counter-clockwise seen from outside.
-std::pair<glm::dvec3, glm::dvec3> plane_basis(const glm::dvec3& n) {
-    const glm::dvec3 helper = std::abs(n.x) < 0.6 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    const glm::dvec3 u = glm::normalize(glm::cross(helper, n));
-    return {u, glm::cross(n, u)};
-}
-
-double cross2(const glm::dvec2& a, const glm::dvec2& b) {
-    return a.x * b.y - a.y * b.x;
-}
-
-bool inside_triangle(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2& b,
-                     const glm::dvec2& c) {
-    return cross2(b - a, p - a) >= 0.0 && cross2(c - b, p - b) >= 0.0 &&
-           cross2(a - c, p - c) >= 0.0;
-}
-
-void ear_clip(const std::vector<glm::dvec3>& vertices, const Facet& facet,
-              std::uint32_t facet_index, std::vector<MeshTriangle>& out) {
-    const auto [u, v] = plane_basis(facet.plane.n);
-    std::vector<glm::dvec2> p;
-    double extent = 0.0;
-    for (std::uint32_t i : facet.loop) {
-        p.emplace_back(glm::dot(vertices[i], u), glm::dot(vertices[i], v));
-        extent = std::max(extent, glm::length(p.back() - p.front()));
-    }
-    const double min_area = 1e-14 * extent * extent;
-    std::vector<std::size_t> left(p.size());
-    for (std::size_t i = 0; i < left.size(); ++i) left[i] = i;
-
-    auto emit = [&](std::size_t a, std::size_t b, std::size_t c) {
-        out.push_back({{facet.loop[a], facet.loop[b], facet.loop[c]}, facet_index});
-    };
-    while (left.size() > 3) {
-        const std::size_t m = left.size();
-        std::optional<std::size_t> ear;
-        std::size_t flattest = 0;
-        double flattest_area = -INFINITY;
-        for (std::size_t k = 0; k < m && !ear; ++k) {
-            const std::size_t a = left[(k + m - 1) % m], b = left[k], c = left[(k + 1) % m];
-            const double area = cross2(p[b] - p[a], p[c] - p[b]);
-            if (area > flattest_area) flattest_area = area, flattest = k;
-            if (area <= min_area) continue;  // reflex or flat: not an ear
-            bool blocked = false;
-            for (std::size_t j : left) {
-                if (j == a || j == b || j == c || p[j] == p[a] || p[j] == p[b] || p[j] == p[c]) {
-                    continue;
-                }
-                if (inside_triangle(p[j], p[a], p[b], p[c])) {
-                    blocked = true;
-                    break;
-                }
-            }
-            if (!blocked) ear = k;
-        }
-        // A valid simple polygon always has an ear; the fallback only guards against
-        // round-off on nearly degenerate loops.
-        const std::size_t k = ear.value_or(flattest);
-        emit(left[(k + m - 1) % m], left[k], left[(k + 1) % m]);
-        left.erase(left.begin() + std::ptrdiff_t(k));
-    }
-    if (left.size() == 3 && cross2(p[left[1]] - p[left[0]], p[left[2]] - p[left[1]]) > 0.0) {
-        emit(left[0], left[1], left[2]);
-    }
-}
-
 // Clips in two passes: a first in a huge box finds out whether the solid is bounded and how
 // big it is; a second in a snug box gives tolerances relative to the stone's own size.
 Result<ClipSolid> intersect(const std::vector<FacetPlane>& planes, double& size) {
@@ -341,8 +275,12 @@ Result<std::vector<FacetPlane>> planes_that_make_facets(const std::vector<FacetP
 
 void triangulate_facets(Stone& stone) {
     stone.triangles.clear();
+    std::vector<std::array<std::uint32_t, 3>> triangles;
     for (std::size_t f = 0; f < stone.facets.size(); ++f) {
-        ear_clip(stone.vertices, stone.facets[f], std::uint32_t(f), stone.triangles);
+        triangles.clear();
+        triangulate_polygon(stone.vertices, stone.facets[f].loop, stone.facets[f].plane.n,
+                            triangles);
+        for (const auto& t : triangles) stone.triangles.push_back({t, std::uint32_t(f)});
     }
 }
 

@@ -52,6 +52,7 @@ class Asc3dsParser {
     explicit Asc3dsParser(const std::filesystem::path& path) : path_(path) {}
 
     Result<Stone> parse(std::string_view text) {
+        text_bytes_ = text.size();
         import::LineCursor cursor(text);
         std::string_view line;
         while (cursor.next(line)) {
@@ -64,6 +65,7 @@ class Asc3dsParser {
     }
 
   private:
+    std::size_t text_bytes_ = 0;
     std::optional<Error> parse_line(std::string_view line) {
         const auto tokens = import::split_tokens(line);
         if (tokens.empty()) return std::nullopt;
@@ -95,6 +97,14 @@ class Asc3dsParser {
         const auto faces = count_field(line, "Faces");
         if (!vertices || !faces || *vertices < 0 || *faces < 0) {
             return error("Tri-mesh line needs 'Vertices: N' and 'Faces: M'");
+        }
+        // Every vertex and face takes a line of its own, so counts larger than the file are
+        // damage; checking first keeps a corrupt count from allocating gigabytes.
+        const auto total = soup_.positions.size() + static_cast<unsigned long long>(*vertices);
+        if (static_cast<unsigned long long>(*vertices) > text_bytes_ ||
+            static_cast<unsigned long long>(*faces) > text_bytes_ || total > UINT32_MAX) {
+            return error("Tri-mesh counts (" + std::to_string(*vertices) + " vertices, " +
+                         std::to_string(*faces) + " faces) do not fit in the file");
         }
         object_ = MeshObject{};
         object_->first_vertex = soup_.positions.size();

@@ -3,6 +3,7 @@
 
 #include <string>
 
+#include "geometry/triangulate.hpp"
 #include "import/import_text.hpp"
 #include "import/load_model.hpp"
 #include "import/mesh_soup.hpp"
@@ -33,7 +34,7 @@ Result<Stone> load_obj(const std::filesystem::path& path) {
     import::TriangleSoup soup;
     // Positive indices may refer to vertices written later, so they are checked at the end;
     // negative ones are relative to the vertices read so far and resolved at once.
-    std::vector<std::array<FaceCorner, 3>> faces;
+    std::vector<std::vector<FaceCorner>> faces;
     import::LineCursor cursor(bytes.value());
     std::string_view line;
     while (cursor.next(line)) {
@@ -83,26 +84,41 @@ Result<Stone> load_obj(const std::filesystem::path& path) {
                 }
                 corners.push_back({resolved, at});
             }
-            // A convex polygon as a fan from its first corner.
-            for (std::size_t k = 1; k + 1 < corners.size(); ++k) {
-                faces.push_back({corners[0], corners[k], corners[k + 1]});
-            }
+            faces.push_back(std::move(corners));
         } else if (!ignored_statement(keyword)) {
             return import::line_error(path, at, "unknown statement '" + std::string(keyword) + "'");
         }
     }
+    // Polygons are triangulated once every vertex is known; ear clipping, because a face of a
+    // gem model (a heart's table, a star) need not be convex.
+    std::vector<std::uint32_t> loop;
+    std::vector<std::array<std::uint32_t, 3>> triangles;
     for (const auto& face : faces) {
-        std::array<std::uint32_t, 3> t{};
-        for (std::size_t k = 0; k < 3; ++k) {
-            if (face[k].index > static_cast<long long>(soup.positions.size())) {
-                return import::line_error(path, face[k].line,
-                                          "face index " + std::to_string(face[k].index) +
+        loop.clear();
+        for (const FaceCorner& corner : face) {
+            if (corner.index > static_cast<long long>(soup.positions.size())) {
+                return import::line_error(path, corner.line,
+                                          "face index " + std::to_string(corner.index) +
                                               " out of range (" +
                                               std::to_string(soup.positions.size()) + " vertices)");
             }
-            t[k] = static_cast<std::uint32_t>(face[k].index - 1);
+            loop.push_back(static_cast<std::uint32_t>(corner.index - 1));
         }
-        soup.triangles.push_back(t);
+        if (loop.size() == 3) {
+            soup.triangles.push_back({loop[0], loop[1], loop[2]});
+            continue;
+        }
+        glm::dvec3 normal(0.0);  // Newell's method: the polygon's area vector
+        for (std::size_t i = 0; i < loop.size(); ++i) {
+            normal +=
+                glm::cross(soup.positions[loop[i]], soup.positions[loop[(i + 1) % loop.size()]]);
+        }
+        if (glm::length(normal) == 0.0) {
+            return import::line_error(path, face.front().line, "face has no area");
+        }
+        triangles.clear();
+        triangulate_polygon(soup.positions, loop, normal, triangles);
+        soup.triangles.insert(soup.triangles.end(), triangles.begin(), triangles.end());
     }
     return import::stone_from_soup(path, soup);
 }

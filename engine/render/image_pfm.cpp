@@ -60,6 +60,14 @@ Result<Image> read_pfm(const std::filesystem::path& path) {
         return Error{path.string() + ": PFM header has a bad size or scale"};
     }
     in.get();  // the single whitespace byte that ends the header
+    // Check that the pixels are there before allocating for them: a damaged header must not
+    // ask for gigabytes.
+    const auto header_end = static_cast<long long>(in.tellg());
+    std::error_code ec;
+    const auto file_bytes = static_cast<long long>(std::filesystem::file_size(path, ec));
+    if (ec || header_end < 0 || file_bytes - header_end < 12 * width * height) {
+        return Error{path.string() + ": PFM data ends early"};
+    }
     const bool little_endian = scale < 0.0;
     Image image(static_cast<int>(width), static_cast<int>(height), glm::vec4(1.0f));
     for (int y = image.height - 1; y >= 0; --y) {

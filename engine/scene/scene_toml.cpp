@@ -1,5 +1,6 @@
 // Reads a scene from TOML with toml++. Every key is checked against the keys its table knows,
 // so a typo is an error rather than a silently ignored setting.
+#include <cmath>
 #include <fstream>
 #include <sstream>
 
@@ -27,6 +28,8 @@ class Reader {
     std::optional<Error> number(const toml::node& n, std::string_view key, double& out) const {
         if (!n.is_number()) return error(n, key, "expected a number");
         out = n.value<double>().value();
+        // TOML allows nan and inf; no key of a scene means anything with them.
+        if (!std::isfinite(out)) return error(n, key, "expected a finite number");
         return std::nullopt;
     }
     std::optional<Error> number_in(const toml::node& n, std::string_view key, double lo, double hi,
@@ -71,6 +74,9 @@ class Reader {
         for (std::size_t i = 0; i < 3; ++i) {
             if (!(*a)[i].is_number()) return error(n, key, "expected three numbers");
             out[static_cast<int>(i)] = (*a)[i].value<double>().value();
+            if (!std::isfinite(out[static_cast<int>(i)])) {
+                return error(n, key, "expected three finite numbers");
+            }
         }
         return std::nullopt;
     }

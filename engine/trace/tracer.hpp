@@ -27,7 +27,8 @@ class Intersector;  // convex half-space clipping or triangle BVH, chosen from t
 
 class Tracer {
   public:
-    explicit Tracer(const Stone& stone);
+    explicit Tracer(const Stone& stone);  // keeps a reference: the stone must outlive it
+    explicit Tracer(Stone&&) = delete;
     ~Tracer();
     Tracer(Tracer&&) noexcept;
     Tracer& operator=(Tracer&&) noexcept;

@@ -120,5 +120,16 @@ TEST(Import3dsAscii, MalformedCoordinateNamesLineAndToken) {
         << result.error();
 }
 
+TEST(Import3dsAscii, AbsurdCountsAreRefusedBeforeAnyAllocation) {
+    std::string text = read_text(model("cube_3ds.asc"));
+    const auto at = text.find("Vertices: 8");
+    ASSERT_NE(at, std::string::npos);
+    text.replace(at, 11, "Vertices: 4000000000");
+    auto result = load_3ds_ascii(write_artifact("absurd_count_3ds.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "absurd_count_3ds.asc:7: Tri-mesh counts"))
+        << result.error();
+}
+
 }  // namespace
 }  // namespace gem

@@ -2,6 +2,7 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <string>
 
@@ -121,6 +122,30 @@ TEST(ImportObj, EmptyFileIsAnError) {
     auto result = load_obj(model("bad/empty.obj"));
     ASSERT_FALSE(result.ok());
     EXPECT_TRUE(contains(result.error(), "empty.obj: no triangles")) << result.error();
+}
+
+TEST(ImportObj, NonConvexPolygonFacesAreTriangulatedWithoutFolding) {
+    // Star prism, outer radius R = 2, inner r = 1, height 1: each cap is 10 triangles of
+    // area R·r·sin 36° / 2, each side edge sqrt(R² + r² − 2Rr cos 36°) long.
+    auto result = load_obj(model("star_prism.obj"));
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Stone& s = result.value();
+    const double pi = 3.14159265358979323846;
+    const double cap = 5.0 * 2.0 * 1.0 * std::sin(pi / 5.0);
+    const double edge = std::sqrt(4.0 + 1.0 - 4.0 * std::cos(pi / 5.0));
+    const SolidReport r = check_solid(s);
+    EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
+    EXPECT_NEAR(r.volume, cap * 1.0, 1e-9);
+    EXPECT_NEAR(r.area, 2.0 * cap + 10.0 * edge * 1.0, 1e-9);
+    EXPECT_EQ(s.facets.size(), 12u);  // two caps and ten sides
+    EXPECT_FALSE(s.convex);
+    for (const Facet& f : s.facets) {
+        // Every facet's outward normal points away from the prism's axis or along ±z.
+        const glm::dvec3 c = s.vertices[f.loop.front()];
+        if (std::abs(f.plane.n.z) > 0.5) {
+            EXPECT_GT(f.plane.n.z * (c.z - 0.5), 0.0);
+        }
+    }
 }
 
 }  // namespace

@@ -196,6 +196,8 @@ TEST(SceneToml, WrongTypesAreErrors) {
     expect_error("[material]\ncolour = [1, 2]\n", "scene.toml:2: material.colour", "[x, y, z]");
     expect_error("camera = 5\n", "scene.toml:1: camera", "expected a table");
     expect_error("[camera]\nelevation = 120\n", "scene.toml:2: camera.elevation", "between");
+    expect_error("[camera]\nazimuth = nan\n", "scene.toml:2: camera.azimuth", "finite");
+    expect_error("[[light]]\nposition = [0, inf, 0]\n", "scene.toml:2: light.position", "finite");
 }
 
 TEST(SceneToml, UnknownNamesAreErrors) {
