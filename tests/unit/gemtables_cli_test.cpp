@@ -172,7 +172,6 @@ TEST_F(GemtablesCli, OutputAppearsOnlyComplete) {
         while (std::fread(buffer, 1, sizeof buffer, pipe) > 0) {
         }
     });
-    bool saw_temporary = false;
     std::vector<std::uint8_t> first_sight;
     const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(120);
     while (std::chrono::steady_clock::now() < give_up) {
@@ -181,17 +180,14 @@ TEST_F(GemtablesCli, OutputAppearsOnlyComplete) {
             first_sight = tables_test::read_bytes(db);
             break;
         }
-        for (const auto& entry : fs::directory_iterator(dir_)) {
-            saw_temporary |= entry.path().filename().string().starts_with("atomic.gemdb.tmp");
-        }
         std::this_thread::sleep_for(std::chrono::milliseconds(1));
     }
     drain.join();
     const int raw = ::pclose(pipe);
     ASSERT_TRUE(WIFEXITED(raw) && WEXITSTATUS(raw) == 0);
-    // It was watched while it ran, and what first showed under the name was the whole file:
-    // byte for byte the final one, which opens (every section and the index check out).
-    EXPECT_TRUE(saw_temporary);
+    // What first showed under the name was the whole file: byte for byte the final one, which
+    // opens (every section and the index check out). Whether the poll also caught the
+    // temporary file depends on timing, so it is not asserted.
     EXPECT_EQ(first_sight, tables_test::read_bytes(db));
     EXPECT_TRUE(Database::open(db).ok());
     for (const auto& entry : fs::directory_iterator(dir_)) {

@@ -1,8 +1,11 @@
 #pragma once
 // A stand-in view source for the view cache tests: a plain view grid, views of a known size
-// whose contents name the view, an optional delay per decode (a slow disk) and damaged views.
+// whose contents name the view, an optional delay per decode (a slow disk), a gate that holds
+// every decode until the test opens it (a disk that has not answered yet) and damaged views.
 
+#include <atomic>
 #include <chrono>
+#include <condition_variable>
 #include <cstdint>
 #include <mutex>
 #include <numbers>
@@ -26,14 +29,38 @@ class FakeSource final : public ViewSource {
     std::chrono::milliseconds delay{0};
     std::set<std::pair<std::uint32_t, std::uint32_t>> damaged;
 
+    // While the gate is shut, decode() waits (at most a minute, so a broken cache that waits
+    // on its own decode fails its test instead of hanging the suite).
+    void shut_gate() {
+        std::lock_guard lock(mutex_);
+        gate_open_ = false;
+    }
+    void open_gate() {
+        {
+            std::lock_guard lock(mutex_);
+            gate_open_ = true;
+        }
+        gate_.notify_all();
+    }
+    // Decodes that have returned so far.
+    int finished() const { return finished_.load(); }
+
     const ViewGrid& grid() const override { return grid_; }
     std::uint32_t level_count() const override { return levels_; }
     Result<DecodedView> decode(std::uint32_t view, std::uint32_t level) const override {
+        {
+            std::unique_lock lock(mutex_);
+            gate_.wait_for(lock, std::chrono::minutes(1), [this] { return gate_open_; });
+        }
         std::this_thread::sleep_for(delay);
         {
             std::lock_guard lock(mutex_);
             decoded_.emplace_back(view, level);
         }
+        struct Finished {
+            std::atomic<int>& count;
+            ~Finished() { ++count; }
+        } finished{finished_};
         if (damaged.contains({view, level})) return Error{"fake: view damaged"};
         DecodedView v;
         v.side = level + 1;
@@ -52,6 +79,9 @@ class FakeSource final : public ViewSource {
     std::uint32_t levels_;
     std::size_t floats_;
     mutable std::mutex mutex_;
+    mutable std::condition_variable gate_;
+    bool gate_open_ = true;
+    mutable std::atomic<int> finished_{0};
     mutable std::vector<std::pair<std::uint32_t, std::uint32_t>> decoded_;
 };
 

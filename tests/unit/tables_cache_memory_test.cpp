@@ -149,14 +149,12 @@ TEST(TablesCacheMemory, DamagedViewIsReportedOnceAndNotRetried) {
 TEST(TablesCacheMemory, DestructorStopsWithWorkQueued) {
     auto source = std::make_shared<FakeSource>(0.3, 1, kFloats);
     source->delay = 20ms;
-    const auto start = std::chrono::steady_clock::now();
     {
         ViewCache cache(source);
         (void)cache.prefetch(source->grid().direction(0), {0.0, 20.0, 0.0}, 0);
         (void)cache.acquire(source->grid().direction(1), 0);
     }
     // At most the decode in flight finishes; the queued ones are dropped.
-    EXPECT_LT(std::chrono::steady_clock::now() - start, 500ms);
     EXPECT_LE(source->decoded().size(), 2u);
 }
 
