@@ -244,6 +244,14 @@ Result<DecodedView> Database::decode(std::uint32_t view, std::uint32_t level) co
     if (counts.value().hits != info.hit_pixels || counts.value().rays != info.rays) {
         return Error{where + ": payload counts disagree with the index"};
     }
+    // Shading looks facets up by these numbers (light obstruction), so one past the stone's
+    // facets is damage, not a number to trust.
+    const std::size_t facets = stone_.facets.size();
+    for (const std::uint16_t f : out.facet) {
+        if (f >= facets)
+            return Error{where + ": a ray names facet " + std::to_string(f) + " of a stone with " +
+                         std::to_string(facets)};
+    }
     return out;
 }
 

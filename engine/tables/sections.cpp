@@ -160,6 +160,15 @@ Result<Material> read_material_section(std::span<const std::uint8_t> bytes) {
             if (!std::isfinite(c) && !in.failed()) return bad(kName, "a coefficient is not finite");
         }
     }
+    // Each kind needs its coefficients: constant one, Cauchy two, Sellmeier (B, C) pairs.
+    const std::size_t have = material.dispersion.coef.size();
+    const bool enough = material.dispersion.kind == Dispersion::Kind::constant ? have >= 1
+                        : material.dispersion.kind == Dispersion::Kind::cauchy
+                            ? have >= 2
+                            : have >= 2 && have % 2 == 0;
+    if (!enough && !in.failed()) {
+        return bad(kName, std::to_string(have) + " coefficients do not fit the dispersion kind");
+    }
     material.body_colour = in.vec3();
     material.absorption_per_mm = in.vec3();
     if (!finite(material.body_colour) || !finite(material.absorption_per_mm)) {
