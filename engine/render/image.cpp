@@ -7,7 +7,7 @@
 #include <stb/stb_image_write.h>
 
 #include "optics/colour.hpp"
-#include "render/file_write.hpp"
+#include "util/atomic_file.hpp"
 
 namespace gem {
 

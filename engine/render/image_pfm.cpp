@@ -7,7 +7,7 @@
 #include <sstream>
 #include <string>
 
-#include "render/file_write.hpp"
+#include "util/atomic_file.hpp"
 #include "render/image.hpp"
 
 namespace gem {

@@ -12,7 +12,7 @@
 #include <string>
 #include <thread>
 
-#include "tables/atomic_file.hpp"
+#include "util/atomic_file.hpp"
 #include "tables/bytes.hpp"
 #include "tables/format.hpp"
 #include "tables/payload.hpp"

@@ -34,4 +34,8 @@ class AtomicFile {
     std::uint64_t size_ = 0;
 };
 
+// The whole of `data` as one atomic file; returns the path written.
+Result<std::filesystem::path> write_file_atomic(const std::filesystem::path& path, const void* data,
+                                                std::size_t size);
+
 }  // namespace gem

@@ -1,4 +1,4 @@
-#include "tables/atomic_file.hpp"
+#include "util/atomic_file.hpp"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -84,6 +84,15 @@ Result<bool> AtomicFile::commit() {
         return Error{"cannot write " + path_.string() +
                      ": fsync of its directory: " + std::strerror(err)};
     return true;
+}
+
+Result<std::filesystem::path> write_file_atomic(const std::filesystem::path& path, const void* data,
+                                                std::size_t size) {
+    auto file = AtomicFile::create(path);
+    if (!file) return Error{file.error()};
+    if (auto appended = file.value().append(data, size); !appended) return Error{appended.error()};
+    if (auto committed = file.value().commit(); !committed) return Error{committed.error()};
+    return path;
 }
 
 }  // namespace gem
