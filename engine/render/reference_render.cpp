@@ -23,12 +23,14 @@ double hash01(std::uint32_t x, std::uint32_t y, std::uint32_t s) {
     return (h >> 8) * (1.0 / 16777216.0);
 }
 
-// Sample s of n inside the unit pixel: a cols × rows grid of strata, jittered inside each;
-// one sample sits at the pixel centre.
+// Sample s of n inside the unit pixel, jittered inside its stratum: a cols × rows grid when
+// n is such a product, otherwise n vertical strips, so the strata always tile the pixel and
+// every part of it is sampled equally. A single sample sits at the pixel centre.
 glm::dvec2 sample_offset(int x, int y, int s, int n) {
     if (n == 1) return {0.5, 0.5};
-    const int cols = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(n))));
-    const int rows = (n + cols - 1) / cols;
+    int cols = static_cast<int>(std::round(std::sqrt(static_cast<double>(n))));
+    if (cols * (n / cols) != n) cols = n;
+    const int rows = n / cols;
     const int cx = s % cols;
     const int cy = s / cols;
     const auto ux = static_cast<std::uint32_t>(x);
