@@ -212,7 +212,10 @@ Result<Database> Database::open(const std::filesystem::path& path) {
         if (p.offset != at || p.compressed_bytes == 0 || p.compressed_bytes > size - at) {
             return fail(which + " points outside the file or out of order");
         }
+        // A pixel holds at most 65535 rays (a 16-bit count), which also bounds what a damaged
+        // index can make decode allocate.
         if (p.hit_pixels > static_cast<std::uint64_t>(side) * side || p.rays < p.hit_pixels ||
+            p.rays > static_cast<std::uint64_t>(p.hit_pixels) * 65535u ||
             p.raw_bytes != payload_size(side, {p.hit_pixels, p.rays}, derivatives)) {
             return fail(which + " has impossible sizes or counts");
         }

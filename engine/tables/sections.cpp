@@ -121,7 +121,12 @@ Result<Stone> read_stone_section(std::span<const std::uint8_t> bytes) {
     } else {
         stone.symmetry.resize(symmetry);
         for (glm::dmat3& m : stone.symmetry) {
-            for (int c = 0; c < 3; ++c) m[c] = in.vec3();
+            for (int c = 0; c < 3; ++c) {
+                m[c] = in.vec3();
+                if (!finite(m[c]) && !in.failed()) {
+                    return bad(kName, "a symmetry matrix is not finite");
+                }
+            }
         }
     }
     for (const glm::dvec3& v : stone.vertices) {

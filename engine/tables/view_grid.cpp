@@ -18,10 +18,14 @@ constexpr std::size_t kMaxNearest = 64;
 // whole sphere's 4π / spacing² divided by the group order.
 constexpr double kMinDistance = 0.9;
 
+// NaN counts as the largest difference, so a matrix of NaNs never passes for a group element.
 double max_abs_difference(const glm::dmat3& a, const glm::dmat3& b) {
     double worst = 0.0;
     for (int c = 0; c < 3; ++c) {
-        for (int r = 0; r < 3; ++r) worst = std::max(worst, std::abs(a[c][r] - b[c][r]));
+        for (int r = 0; r < 3; ++r) {
+            const double d = std::abs(a[c][r] - b[c][r]);
+            if (!(d <= worst)) worst = std::isnan(d) ? INFINITY : d;
+        }
     }
     return worst;
 }

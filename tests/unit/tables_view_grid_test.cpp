@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <random>
 
@@ -263,6 +264,10 @@ TEST(TablesViewGrid, BadSpecsAndGroupsAreErrors) {
     auto open = ViewGrid::build({0.1, 0.0}, {glm::dmat3(1.0), tables_test::rotation_y(0.3)});
     ASSERT_FALSE(open.ok());
     EXPECT_NE(open.error().find("not a group"), std::string::npos);
+    // Matrices of NaN compare as neither equal nor different; they must not pass as a group.
+    const glm::dmat3 nan(std::numeric_limits<double>::quiet_NaN());
+    auto broken = ViewGrid::build({0.1, 0.0}, {nan, nan});
+    EXPECT_FALSE(broken.ok());
 }
 
 }  // namespace
