@@ -7,6 +7,8 @@
 #include <initializer_list>
 #include <utility>
 
+#include "optics/spectrum.hpp"
+
 namespace gem {
 
 namespace {
@@ -224,6 +226,41 @@ std::optional<Material> find_material(std::string_view name) {
         if (lookup_key(m.name) == key) return m;
     }
     return std::nullopt;
+}
+
+// Material::index() asserts on a Sellmeier resonance at the asked wavelength and on n² ≤ 0,
+// and shading assumes n ≥ 1: so a stored dispersion must have no Sellmeier resonance in the
+// rendered range and give a finite n ≥ 1 across it (1 nm steps; `coef` already fits `kind`).
+bool Dispersion::is_physical() const {
+    const Dispersion& d = *this;
+    const auto l2 = [](double nm) { return nm * nm * 1e-6; };  // µm²
+    if (d.kind == Dispersion::Kind::sellmeier) {
+        for (std::size_t i = 0; i + 1 < d.coef.size(); i += 2) {
+            const double c = d.coef[i + 1];
+            if (c >= l2(kSpectrumMinNm - 1.0) && c <= l2(kSpectrumMaxNm + 1.0)) return false;
+        }
+    }
+    for (double nm = kSpectrumMinNm; nm <= kSpectrumMaxNm; nm += 1.0) {
+        double n2 = 0.0;
+        switch (d.kind) {
+            case Dispersion::Kind::constant:
+                n2 = d.coef[0] * std::abs(d.coef[0]);
+                break;
+            case Dispersion::Kind::cauchy: {
+                const double n = d.coef[0] + d.coef[1] / l2(nm);
+                n2 = n * std::abs(n);
+                break;
+            }
+            case Dispersion::Kind::sellmeier:
+                n2 = 1.0;
+                for (std::size_t i = 0; i + 1 < d.coef.size(); i += 2) {
+                    n2 += d.coef[i] * l2(nm) / (l2(nm) - d.coef[i + 1]);
+                }
+                break;
+        }
+        if (!(std::isfinite(n2) && n2 >= 1.0)) return false;
+    }
+    return true;
 }
 
 }  // namespace gem

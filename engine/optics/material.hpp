@@ -25,6 +25,9 @@ struct Dispersion {
     std::vector<double> coef{1.5};
 
     double index(double wavelength_nm) const;
+    // A finite n >= 1 everywhere in the rendered spectrum, with no Sellmeier resonance in it:
+    // what index() and the shading assume of a material read from a file.
+    bool is_physical() const;
     static Dispersion constant_index(double n);
     // Cauchy fit through n(D) and the B–G dispersion n(G) − n(B).
     static Dispersion cauchy_from_nd(double nd, double dispersion_bg);

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <string>
 
+#include "optics/spectrum.hpp"
 #include "tables/format.hpp"
 
 namespace gem {
@@ -173,6 +174,11 @@ Result<Material> read_material_section(std::span<const std::uint8_t> bytes) {
                             : have >= 2 && have % 2 == 0;
     if (!enough && !in.failed()) {
         return bad(kName, std::to_string(have) + " coefficients do not fit the dispersion kind");
+    }
+    if (enough && !in.failed() && !material.dispersion.is_physical()) {
+        return bad(kName, "the refractive index is not a finite n >= 1 over " +
+                              std::to_string(static_cast<int>(kSpectrumMinNm)) + "-" +
+                              std::to_string(static_cast<int>(kSpectrumMaxNm)) + " nm");
     }
     material.body_colour = in.vec3();
     material.absorption_per_mm = in.vec3();

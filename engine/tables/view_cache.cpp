@@ -133,14 +133,35 @@ AcquiredView ViewCache::acquire(const glm::dvec3& direction, std::uint32_t wante
     }
     if (!chosen && !resident_.empty()) {
         // None of the close views is in yet: the nearest of all resident ones stands in.
-        std::optional<ViewMatch> best;
-        const glm::dvec3 asked = glm::normalize(direction);
-        for (const auto& [k, entry] : resident_) {
-            const auto view = static_cast<std::uint32_t>(k / levels_);
-            const ViewMatch m = nearest_image(grid, view, asked);
-            if (!best || m.angle < best->angle) best = m;
+        // Each resident view counts once however many of its levels are in; acos falls as
+        // its argument rises, so the largest (clamped) cosine is the smallest angle and only
+        // the winner's is turned into one.
+        fallback_views_.clear();
+        for (const auto& entry : resident_) {
+            fallback_views_.push_back(static_cast<std::uint32_t>(entry.first / levels_));
         }
-        take(*best, best_level(best->view, wanted_level));
+        std::sort(fallback_views_.begin(), fallback_views_.end());
+        fallback_views_.erase(std::unique(fallback_views_.begin(), fallback_views_.end()),
+                              fallback_views_.end());
+        const glm::dvec3 asked = glm::normalize(direction);
+        fallback_images_.clear();
+        for (const glm::dmat3& g : grid.group()) fallback_images_.push_back(g * asked);
+        ViewMatch best{fallback_views_.front(), 0, 0.0};
+        double best_cosine = -std::numeric_limits<double>::infinity();
+        for (const std::uint32_t view : fallback_views_) {
+            const glm::dvec3& stored = grid.direction(view);
+            for (std::size_t g = 0; g < fallback_images_.size(); ++g) {
+                const double cosine = std::clamp(glm::dot(fallback_images_[g], stored), -1.0, 1.0);
+                if (cosine > best_cosine) {
+                    best_cosine = cosine;
+                    best.view = view;
+                    best.symmetry = static_cast<std::uint32_t>(g);
+                }
+            }
+        }
+        // An empty group (never built by ViewGrid) keeps nearest_image()'s "no match" angle.
+        best.angle = fallback_images_.empty() ? 4.0 : std::acos(best_cosine);
+        take(best, best_level(best.view, wanted_level));
     }
     out.exact ? ++stats_.hits : ++stats_.misses;
 

@@ -155,6 +155,9 @@ class ViewCache {
     std::uint64_t demand_counter_ = 0;
     std::unordered_map<Key, Entry> resident_;
     std::list<Key> lru_;  // most recently used first
+    // acquire()'s fallback scratch, kept to spare an allocation per frame (mutex_ held).
+    std::vector<std::uint32_t> fallback_views_;
+    std::vector<glm::dvec3> fallback_images_;
     std::unordered_set<Key> bad_;
     Key in_flight_ = ~Key{0};
     ViewCacheStats stats_;

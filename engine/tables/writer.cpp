@@ -12,11 +12,11 @@
 #include <string>
 #include <thread>
 
-#include "util/atomic_file.hpp"
 #include "tables/bytes.hpp"
 #include "tables/format.hpp"
 #include "tables/payload.hpp"
 #include "tables/sections.hpp"
+#include "util/atomic_file.hpp"
 
 namespace gem {
 
@@ -70,16 +70,50 @@ std::optional<std::string> check_inputs(const Stone& stone, const CameraModel& c
         stone.material.dispersion.coef.size() > gemdb::kMaxCoefficients) {
         return "the stone is empty or exceeds the format's limits";
     }
+    // Each kind needs its coefficients: constant one, Cauchy two, Sellmeier (B, C) pairs. The
+    // reader refuses any other count, so a file written with one could never be opened.
+    const Dispersion& dispersion = stone.material.dispersion;
+    const std::size_t coefficients = dispersion.coef.size();
+    const bool fits = dispersion.kind == Dispersion::Kind::constant ? coefficients >= 1
+                      : dispersion.kind == Dispersion::Kind::cauchy
+                          ? coefficients >= 2
+                          : coefficients >= 2 && coefficients % 2 == 0;
+    if (!fits) {
+        return "stone.material.dispersion has " + std::to_string(coefficients) +
+               " coefficients, which do not fit its kind (constant needs 1 or more, Cauchy 2 "
+               "or more, Sellmeier an even count of 2 or more)";
+    }
     return std::nullopt;
 }
 
-Chunk make_chunk(std::uint32_t view, std::uint32_t level, const BuildParams& params,
-                 const PositionBox& box, const TraceViewFn& trace_view,
+// The reader refuses a ray naming a facet the stone does not have, so the writer does too.
+std::optional<std::string> check_facets(const std::vector<RayList>& lists, std::size_t facets) {
+    auto bad = [&](const TracedRay& ray) { return ray.facet >= facets; };
+    for (const RayList& list : lists) {
+        if (!list.hit) continue;
+        const TracedRay* wrong = bad(list.reflected) ? &list.reflected : nullptr;
+        for (std::size_t e = 0; wrong == nullptr && e < list.exits.size(); ++e) {
+            if (bad(list.exits[e])) wrong = &list.exits[e];
+        }
+        if (wrong != nullptr) {
+            return "a ray names facet " + std::to_string(wrong->facet) + " of a stone with " +
+                   std::to_string(facets);
+        }
+    }
+    return std::nullopt;
+}
+
+Chunk make_chunk(std::uint32_t view, std::uint32_t level, std::size_t facets,
+                 const BuildParams& params, const PositionBox& box, const TraceViewFn& trace_view,
                  const TraceDerivativesFn& trace_derivatives, int zstd_level) {
     Chunk chunk;
     const std::string where = "view " + std::to_string(view) + " level " + std::to_string(level);
     try {
         const std::vector<RayList> lists = trace_view(view, level);
+        if (auto bad = check_facets(lists, facets)) {
+            chunk.error = where + ": " + *bad;
+            return chunk;
+        }
         std::optional<std::vector<glm::dvec3>> derivatives;
         if (params.dispersion) derivatives = trace_derivatives(view, level, lists);
         std::vector<std::uint8_t> raw;
@@ -179,9 +213,10 @@ Result<WriteSummary> write_database(const std::filesystem::path& path, const Sto
         auto work = [&] {
             for (std::uint64_t i = next++; i < count; i = next++) {
                 const std::uint64_t k = start + i;
-                chunks[i] = make_chunk(static_cast<std::uint32_t>(k / levels),
-                                       static_cast<std::uint32_t>(k % levels), params, box,
-                                       trace_view, trace_derivatives, options.zstd_level);
+                chunks[i] =
+                    make_chunk(static_cast<std::uint32_t>(k / levels),
+                               static_cast<std::uint32_t>(k % levels), stone.facets.size(), params,
+                               box, trace_view, trace_derivatives, options.zstd_level);
             }
         };
         if (threads == 1) {

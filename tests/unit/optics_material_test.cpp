@@ -170,5 +170,17 @@ TEST(OpticsMaterial, FindMaterialAcceptsAliasesAnyCase) {
     EXPECT_FALSE(find_material("diamonds").has_value());
 }
 
+TEST(OpticsMaterial, BuiltinsArePhysicalAndBrokenDispersionsAreNot) {
+    for (const Material& m : builtin_materials()) EXPECT_TRUE(m.dispersion.is_physical()) << m.name;
+    EXPECT_FALSE(Dispersion::constant_index(0.8).is_physical());  // n < 1
+    // A Sellmeier resonance at 500 nm (C = 0.25 µm²) lies inside the rendered spectrum.
+    Dispersion resonant;
+    resonant.kind = Dispersion::Kind::sellmeier;
+    resonant.coef = {1.0, 0.25};
+    EXPECT_FALSE(resonant.is_physical());
+    resonant.coef = {1.0, 0.01};  // resonance at 100 nm, outside
+    EXPECT_TRUE(resonant.is_physical());
+}
+
 }  // namespace
 }  // namespace gem

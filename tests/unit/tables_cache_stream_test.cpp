@@ -3,13 +3,16 @@
 // camera, the coarse level first. Also the cache over a real (small) database.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "tables/reader.hpp"
 #include "tables/view_cache.hpp"
+#include "tables/view_cache_motion.hpp"
 #include "tables_cache_fake.hpp"
 #include "tables_test_support.hpp"
 
@@ -186,6 +189,52 @@ TEST(TablesCacheStream, ServesARealDatabase) {
     std::size_t hits = 0;
     for (std::uint16_t c : got.view->ray_count) hits += c > 0;
     EXPECT_EQ(hits, expected_hits);
+}
+
+// When none of the views near the asked direction is in, the stand-in is the resident view at
+// the smallest angle over all of them (each counted once, whichever levels are in), as
+// nearest_image() measures it.
+TEST(TablesCacheStream, FallbackIsTheNearestResidentView) {
+    auto source = std::make_shared<FakeSource>(0.3, 2, 100);
+    ViewCache cache(source);
+    const ViewGrid& grid = source->grid();
+    // Some views with both levels in, some with only the coarse one.
+    const std::uint32_t a = grid.nearest(from_angles(0.0, 1.0)).view;
+    const std::uint32_t b = grid.nearest(from_angles(0.8, 0.9)).view;
+    const std::uint32_t c = grid.nearest(from_angles(-0.7, 0.6)).view;
+    const std::uint32_t d = grid.nearest(from_angles(2.5, 0.7)).view;
+    (void)cache.acquire(grid.direction(a), 1);
+    (void)cache.acquire(grid.direction(b), 0);
+    (void)cache.acquire(grid.direction(c), 1);
+    (void)cache.acquire(grid.direction(d), 0);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    source->shut_gate();
+    for (const glm::dvec3& asked : {from_angles(0.3, -0.3), from_angles(-1.2, -0.1),
+                                    from_angles(2.2, -0.2), from_angles(0.9, 0.1)}) {
+        std::array<ViewMatch, 8> near{};
+        const std::size_t found = grid.nearest_k(asked, near);
+        bool near_resident = false;
+        for (std::size_t i = 0; i < found; ++i) {
+            for (std::uint32_t l = 0; l < 2; ++l) near_resident |= cache.resident(near[i].view, l);
+        }
+        ASSERT_FALSE(near_resident) << "the test wants a direction away from the resident views";
+        std::optional<ViewMatch> expected;
+        for (std::uint32_t v = 0; v < grid.size(); ++v) {
+            if (!cache.resident(v, 0) && !cache.resident(v, 1)) continue;
+            const ViewMatch m = nearest_image(grid, v, glm::normalize(asked));
+            if (!expected || m.angle < expected->angle) expected = m;
+        }
+        ASSERT_TRUE(expected.has_value());
+        const AcquiredView got = cache.acquire(asked, 1);
+        ASSERT_NE(got.view, nullptr);
+        EXPECT_FALSE(got.exact);
+        EXPECT_EQ(got.match.view, expected->view);
+        EXPECT_EQ(got.match.symmetry, expected->symmetry);
+        EXPECT_NEAR(got.match.angle, expected->angle, 1e-12);
+        EXPECT_EQ(got.level, cache.resident(expected->view, 1) ? 1u : 0u);
+        EXPECT_EQ(got.view->weight.front(), static_cast<float>(expected->view));
+    }
+    source->open_gate();
 }
 
 }  // namespace

@@ -5,7 +5,9 @@
 #include <gtest/gtest.h>
 #include <xxhash.h>
 
+#include <algorithm>
 #include <cstring>
+#include <string>
 
 #include "tables/reader.hpp"
 #include "tables_test_support.hpp"
@@ -258,6 +260,108 @@ TEST_F(TablesDamage, MissingAndNonFilesAreErrors) {
     auto directory = Database::open(*dir_);
     ASSERT_FALSE(directory.ok());
     EXPECT_NE(directory.error().find("not a regular file"), std::string::npos);
+}
+
+// The writer refuses coefficients that do not fit their kind, so the file is written with a
+// fitting count and only the kind byte is changed afterwards.
+TEST_F(TablesDamage, CoefficientsThatDoNotFitTheDispersionKindAreRefused) {
+    struct Case {
+        Dispersion::Kind written;
+        std::vector<double> coef;
+        Dispersion::Kind patched;
+    };
+    const std::vector<Case> cases = {
+        {Dispersion::Kind::constant, {1.76}, Dispersion::Kind::cauchy},
+        {Dispersion::Kind::constant, {1.76}, Dispersion::Kind::sellmeier},
+        {Dispersion::Kind::cauchy, {1.7, 0.006, 0.0001}, Dispersion::Kind::sellmeier},
+    };
+    for (const Case& c : cases) {
+        SmallDatabase db = small_database(false);
+        db.stone.material.dispersion.kind = c.written;
+        db.stone.material.dispersion.coef = c.coef;
+        const auto path = *dir_ / "material.gemdb";
+        ASSERT_TRUE(write_small(path, db).ok());
+        std::vector<std::uint8_t> bad = read_bytes(path);
+        ASSERT_TRUE(Database::open(path).ok()) << "the unpatched file must open";
+        // The material section starts with its name (u32 length + bytes), then the kind byte.
+        const std::size_t material = section_offset(bad, 1);
+        const std::size_t name = bad[material] | (bad[material + 1] << 8);
+        ASSERT_EQ(bad[material + 4 + name], static_cast<std::uint8_t>(c.written));
+        bad[material + 4 + name] = static_cast<std::uint8_t>(c.patched);
+        reseal_section(bad, 1);
+        reseal_header(bad);
+        expect_refused(bad,
+                       "material section: " + std::to_string(c.coef.size()) +
+                           " coefficients do not fit the dispersion kind",
+                       "kind " + std::to_string(int(c.patched)));
+    }
+}
+
+// A file whose stone has one facet fewer than its rays name: written with a seven-facet stone
+// whose rays name facet 6, then given the stone section of the six-facet stone it was made
+// from. The stone names are padded so that both sections have the same size, so only the
+// stone section and the checksums change.
+TEST_F(TablesDamage, ARayNamingAMissingFacetFailsThatViewOnly) {
+    SmallDatabase six = small_database(false);
+    SmallDatabase seven = six;
+    Facet extra = seven.stone.facets[0];
+    extra.name = "face 6";
+    seven.stone.facets.push_back(extra);
+    const auto seven_path = *dir_ / "seven.gemdb";
+    const auto six_path = *dir_ / "six.gemdb";
+    auto written = write_database(seven_path, seven.stone, seven.camera, seven.params, seven.grid,
+                                  [&](std::uint32_t view, std::uint32_t level) {
+                                      std::vector<RayList> lists = random_lists(
+                                          chunk_seed(view, level), seven.params.levels[level]);
+                                      if (view == 0 && level == 0) {
+                                          for (RayList& list : lists) {
+                                              if (!list.hit) continue;
+                                              list.reflected.facet = 6;
+                                              break;
+                                          }
+                                      }
+                                      return lists;
+                                  });
+    ASSERT_TRUE(written.ok()) << written.error();
+    const std::vector<std::uint8_t> with_seven = read_bytes(seven_path);
+    ASSERT_TRUE(write_small(six_path, six).ok());
+    const std::size_t grow = section_size(with_seven, 0) - section_size(read_bytes(six_path), 0);
+    six.stone.name += std::string(grow, '.');
+    ASSERT_TRUE(write_small(six_path, six).ok());
+    const std::vector<std::uint8_t> with_six = read_bytes(six_path);
+    ASSERT_EQ(section_size(with_six, 0), section_size(with_seven, 0));
+    ASSERT_EQ(section_offset(with_six, 0), section_offset(with_seven, 0));
+
+    {
+        auto good = Database::open(seven_path);
+        ASSERT_TRUE(good.ok()) << good.error();
+        ASSERT_TRUE(good.value().decode(0, 0).ok()) << "facet 6 exists in the seven-facet stone";
+    }
+    std::vector<std::uint8_t> bad = with_seven;
+    const std::size_t stone = section_offset(bad, 0);
+    std::copy_n(with_six.begin() + static_cast<std::ptrdiff_t>(stone), section_size(bad, 0),
+                bad.begin() + static_cast<std::ptrdiff_t>(stone));
+    reseal_section(bad, 0);
+    reseal_header(bad);
+    const auto path = *dir_ / "missing-facet.gemdb";
+    write_bytes(path, bad);
+    auto db = Database::open(path);
+    ASSERT_TRUE(db.ok()) << "payloads are checked on decode, not on open: " << db.error();
+    ASSERT_EQ(db.value().stone().facets.size(), 6u);
+    for (std::uint32_t v = 0; v < db.value().view_count(); ++v) {
+        for (std::uint32_t l = 0; l < db.value().level_count(); ++l) {
+            auto view = db.value().decode(v, l);
+            if (v == 0 && l == 0) {
+                ASSERT_FALSE(view.ok());
+                EXPECT_NE(view.error().find(path.string()), std::string::npos) << view.error();
+                EXPECT_NE(view.error().find("a ray names facet 6 of a stone with 6"),
+                          std::string::npos)
+                    << view.error();
+            } else {
+                EXPECT_TRUE(view.ok()) << "view " << v << " level " << l << ": " << view.error();
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -222,5 +222,81 @@ TEST(TablesDatabase, FailedWriteLeavesNoFile) {
     EXPECT_NE(short_list.error().find("view 0 level 0"), std::string::npos);
 }
 
+TEST(TablesDatabase, WriterRefusesARayNamingAMissingFacet) {
+    const SmallDatabase input = small_database(false);
+    const auto dir = artifact_dir("facets");
+    const auto path = dir / "bad-facet.gemdb";
+    std::filesystem::remove(path);
+    const std::size_t facets = input.stone.facets.size();
+    for (const bool exit_ray : {false, true}) {
+        auto written = write_database(
+            path, input.stone, input.camera, input.params, input.grid,
+            [&](std::uint32_t view, std::uint32_t level) {
+                std::vector<RayList> lists =
+                    random_lists(chunk_seed(view, level), input.params.levels[level]);
+                if (view != 1 || level != 1) return lists;
+                for (RayList& list : lists) {
+                    if (!list.hit) continue;
+                    if (!exit_ray) {
+                        list.reflected.facet = static_cast<std::uint32_t>(facets);
+                        break;
+                    }
+                    if (list.exits.empty()) continue;
+                    list.exits.back().weight = 0.5;  // kept, not dropped by the threshold
+                    list.exits.back().facet = static_cast<std::uint32_t>(facets);
+                    break;
+                }
+                return lists;
+            });
+        ASSERT_FALSE(written.ok()) << (exit_ray ? "exit ray" : "reflection");
+        EXPECT_NE(written.error().find(path.string()), std::string::npos) << written.error();
+        EXPECT_NE(written.error().find("view 1 level 1"), std::string::npos) << written.error();
+        EXPECT_NE(written.error().find("a ray names facet 6 of a stone with 6"), std::string::npos)
+            << written.error();
+        EXPECT_FALSE(std::filesystem::exists(path));
+    }
+}
+
+TEST(TablesDatabase, WriterRefusesCoefficientsThatDoNotFitTheDispersionKind) {
+    const auto dir = artifact_dir("coefficients");
+    const auto path = dir / "material.gemdb";
+    using K = Dispersion::Kind;
+    const std::vector<std::pair<K, std::vector<double>>> bad = {
+        {K::constant, {}},  {K::cauchy, {}},       {K::cauchy, {1.7}},
+        {K::sellmeier, {}}, {K::sellmeier, {1.4}}, {K::sellmeier, {0.7, 0.06, 0.4}},
+    };
+    for (const auto& [kind, coef] : bad) {
+        SmallDatabase input = small_database(false);
+        input.stone.material.dispersion.kind = kind;
+        input.stone.material.dispersion.coef = coef;
+        std::filesystem::remove(path);
+        auto written = write_small(path, input);
+        ASSERT_FALSE(written.ok()) << "kind " << int(kind) << " with " << coef.size();
+        EXPECT_NE(written.error().find(path.string()), std::string::npos) << written.error();
+        EXPECT_NE(written.error().find(std::to_string(coef.size()) +
+                                       " coefficients, which do not fit its kind"),
+                  std::string::npos)
+            << written.error();
+        EXPECT_FALSE(std::filesystem::exists(path));
+    }
+    const std::vector<std::pair<K, std::vector<double>>> good = {
+        {K::constant, {2.417}},
+        {K::cauchy, {1.7, 0.006}},
+        {K::cauchy, {1.7, 0.006, 0.0001}},
+        {K::sellmeier, {0.7, 0.06}},
+        {K::sellmeier, {0.7, 0.06, 0.4, 0.1}},
+    };
+    for (const auto& [kind, coef] : good) {
+        SmallDatabase input = small_database(false);
+        input.stone.material.dispersion.kind = kind;
+        input.stone.material.dispersion.coef = coef;
+        auto written = write_small(path, input);
+        ASSERT_TRUE(written.ok()) << written.error();
+        auto db = Database::open(path);
+        ASSERT_TRUE(db.ok()) << db.error();
+        EXPECT_EQ(db.value().stone().material.dispersion.coef, coef);
+    }
+}
+
 }  // namespace
 }  // namespace gem
