@@ -7,8 +7,8 @@
 #include <sstream>
 #include <string>
 
-#include "util/atomic_file.hpp"
 #include "render/image.hpp"
+#include "util/atomic_file.hpp"
 
 namespace gem {
 
