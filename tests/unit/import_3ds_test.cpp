@@ -10,31 +10,15 @@
 
 #include "geometry/validate.hpp"
 #include "import/load_model.hpp"
+#include "import_test_files.hpp"
 
 namespace gem {
 namespace {
 
-std::filesystem::path model(const std::string& name) {
-    return std::filesystem::path(GEM_FIXTURES_DIR) / "models" / name;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-std::string read_text(const std::filesystem::path& path) {
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream s;
-    s << in.rdbuf();
-    return s.str();
-}
-
-std::filesystem::path write_artifact(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::path(GEM_ARTIFACT_DIR) / "import" / name;
-    std::filesystem::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
+using import_test::contains;
+using import_test::model;
+using import_test::read_text;
+using import_test::write_artifact;
 
 TEST(Import3dsAscii, CubeWithSpacingVariations) {
     auto result = load_3ds_ascii(model("cube_3ds.asc"));

@@ -13,26 +13,16 @@
 
 #include "geometry/validate.hpp"
 #include "import/load_model.hpp"
+#include "import_test_files.hpp"
 
 namespace gem {
 namespace {
 
+using import_test::contains;
+using import_test::model;
+using import_test::write_artifact;
+
 constexpr double kDeg = std::numbers::pi / 180.0;
-
-std::filesystem::path model(const std::string& name) {
-    return std::filesystem::path(GEM_FIXTURES_DIR) / "models" / name;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
-
-std::filesystem::path write_artifact(const std::string& name, const std::string& text) {
-    const auto path = std::filesystem::path(GEM_ARTIFACT_DIR) / "import" / name;
-    std::filesystem::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-    return path;
-}
 
 struct Box {
     glm::dvec3 lo{1e9}, hi{-1e9};

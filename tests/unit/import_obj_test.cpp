@@ -8,17 +8,13 @@
 
 #include "geometry/validate.hpp"
 #include "import/load_model.hpp"
+#include "import_test_files.hpp"
 
 namespace gem {
 namespace {
 
-std::filesystem::path model(const std::string& name) {
-    return std::filesystem::path(GEM_FIXTURES_DIR) / "models" / name;
-}
-
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using import_test::contains;
+using import_test::model;
 
 // The facet whose outward normal is closest to `axis`.
 const Facet& facet_along(const Stone& s, const glm::dvec3& axis) {

@@ -13,13 +13,12 @@
 
 #include "geometry/validate.hpp"
 #include "import/load_model.hpp"
+#include "import_test_files.hpp"
 
 namespace gem {
 namespace {
 
-bool contains(const std::string& text, const std::string& part) {
-    return text.find(part) != std::string::npos;
-}
+using import_test::contains;
 
 void put_u32(std::string& out, std::uint32_t v) {
     for (int k = 0; k < 4; ++k) out.push_back(static_cast<char>((v >> (8 * k)) & 0xFF));
