@@ -39,6 +39,8 @@ class Camera {
     const glm::dvec3& right() const { return right_; }
     const glm::dvec3& up() const { return up_; }
     bool orthographic() const { return distance_ <= 0.0; }
+    double distance() const { return distance_; }    // eye distance; 0 when orthographic
+    double ray_start() const { return ray_start_; }  // orthographic rays start this far back
     // Image-plane extent of one pixel: mm (orthographic) or tangent units at unit distance.
     double pixel_size() const { return pixel_size_; }
     int width() const { return width_; }

@@ -29,6 +29,13 @@ Result<DecodedView> DatabaseViewSource::decode(std::uint32_t view, std::uint32_t
     return database_->decode(view, level);
 }
 
+std::uint64_t DatabaseViewSource::decoded_bytes_at_least(std::uint32_t view,
+                                                         std::uint32_t level) const {
+    // decode() first inflates the whole raw payload, and the decoded arrays are larger still
+    // (every 16-bit field widens to a float or a vec3).
+    return database_->payload(view, level).raw_bytes;
+}
+
 std::size_t decoded_view_bytes(const DecodedView& v) {
     auto bytes = [](const auto& array) {
         return array.capacity() * sizeof(typename std::decay_t<decltype(array)>::value_type);
@@ -265,24 +272,29 @@ void ViewCache::worker() {
         const auto view = static_cast<std::uint32_t>(k / levels_);
         const auto level = static_cast<std::uint32_t>(k % levels_);
         const auto start = std::chrono::steady_clock::now();
-        Result<DecodedView> decoded = source_->decode(view, level);
-        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
+        auto too_large = [&](std::uint64_t bytes) {
+            return "view " + std::to_string(view) + " level " + std::to_string(level) +
+                   " needs " + std::to_string(bytes) +
+                   " bytes, more than the cache's memory bound of " +
+                   std::to_string(options_.memory_bytes);
+        };
         std::optional<std::string> failure;
         std::shared_ptr<const DecodedView> shared;
         std::size_t bytes = 0;
-        if (!decoded) {
+        if (const std::uint64_t at_least = source_->decoded_bytes_at_least(view, level);
+            at_least > options_.memory_bytes) {
+            failure = too_large(at_least);
+        } else if (Result<DecodedView> decoded = source_->decode(view, level); !decoded) {
             failure = decoded.error();
         } else {
             bytes = decoded_view_bytes(decoded.value());
             if (bytes > options_.memory_bytes) {
-                failure = "view " + std::to_string(view) + " level " + std::to_string(level) +
-                          " needs " + std::to_string(bytes) +
-                          " bytes, more than the cache's memory bound of " +
-                          std::to_string(options_.memory_bytes);
+                failure = too_large(bytes);
             } else {
                 shared = std::make_shared<const DecodedView>(std::move(decoded).value());
             }
         }
+        const std::chrono::duration<double> took = std::chrono::steady_clock::now() - start;
 
         lock.lock();
         ++stats_.decodes;

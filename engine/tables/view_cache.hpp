@@ -36,6 +36,13 @@ class ViewSource {
     virtual const ViewGrid& grid() const = 0;
     virtual std::uint32_t level_count() const = 0;
     virtual Result<DecodedView> decode(std::uint32_t view, std::uint32_t level) const = 0;
+    // A lower bound of the bytes the decoded view will hold, known before decoding (0 when
+    // unknown): the cache refuses a view whose bound already exceeds its memory, so a damaged
+    // or absurd index never makes the worker allocate gigabytes.
+    virtual std::uint64_t decoded_bytes_at_least(std::uint32_t /*view*/,
+                                                 std::uint32_t /*level*/) const {
+        return 0;
+    }
 };
 
 // Decodes from an open database, which it keeps alive.
@@ -45,6 +52,7 @@ class DatabaseViewSource final : public ViewSource {
     const ViewGrid& grid() const override;
     std::uint32_t level_count() const override;
     Result<DecodedView> decode(std::uint32_t view, std::uint32_t level) const override;
+    std::uint64_t decoded_bytes_at_least(std::uint32_t view, std::uint32_t level) const override;
 
   private:
     std::shared_ptr<const Database> database_;

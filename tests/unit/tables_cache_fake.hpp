@@ -28,6 +28,8 @@ class FakeSource final : public ViewSource {
 
     std::chrono::milliseconds delay{0};
     std::set<std::pair<std::uint32_t, std::uint32_t>> damaged;
+    // What decoded_bytes_at_least() claims for every view (an index that promises too much).
+    std::uint64_t claimed_bytes = 0;
 
     // While the gate is shut, decode() waits (at most a minute, so a broken cache that waits
     // on its own decode fails its test instead of hanging the suite).
@@ -47,6 +49,9 @@ class FakeSource final : public ViewSource {
 
     const ViewGrid& grid() const override { return grid_; }
     std::uint32_t level_count() const override { return levels_; }
+    std::uint64_t decoded_bytes_at_least(std::uint32_t, std::uint32_t) const override {
+        return claimed_bytes;
+    }
     Result<DecodedView> decode(std::uint32_t view, std::uint32_t level) const override {
         {
             std::unique_lock lock(mutex_);

@@ -117,6 +117,20 @@ TEST(TablesCacheMemory, ViewLargerThanTheBoundIsReportedNotKept) {
     EXPECT_EQ(cache.stats().bytes_resident, 0u);
 }
 
+TEST(TablesCacheMemory, ViewClaimingMoreThanTheBoundIsRefusedBeforeDecoding) {
+    auto source = std::make_shared<FakeSource>(0.3, 1, kFloats);
+    source->claimed_bytes = 4ull << 30;  // what a damaged index could promise
+    std::string report;
+    ViewCache cache(source, {}, [&](std::uint32_t, std::uint32_t, const std::string& message) {
+        report = message;
+    });
+    EXPECT_EQ(cache.acquire(source->grid().direction(2), 0).view, nullptr);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    EXPECT_TRUE(source->decoded().empty());
+    EXPECT_TRUE(cache.bad(2, 0));
+    EXPECT_NE(report.find("more than the cache's memory bound"), std::string::npos) << report;
+}
+
 TEST(TablesCacheMemory, DamagedViewIsReportedOnceAndNotRetried) {
     auto source = std::make_shared<FakeSource>(0.3, 2, kFloats);
     source->damaged.insert({7, 1});

@@ -1,0 +1,81 @@
+#include "gpu/environment_cube.hpp"
+
+#include <vector>
+
+#include "gpu/gl_check.hpp"
+
+namespace gem::gpu {
+
+glm::dvec3 cube_face_direction(int face, double s, double t) {
+    // OpenGL ES 3.0.6 §3.8.10, table 3.21: (sc, tc, ma) per major axis; s = (sc/|ma| + 1)/2.
+    const double sc = 2.0 * s - 1.0;
+    const double tc = 2.0 * t - 1.0;
+    glm::dvec3 d(0.0);
+    switch (face) {
+        case 0: d = {1.0, -tc, -sc}; break;
+        case 1: d = {-1.0, -tc, sc}; break;
+        case 2: d = {sc, 1.0, tc}; break;
+        case 3: d = {sc, -1.0, -tc}; break;
+        case 4: d = {sc, -tc, 1.0}; break;
+        default: d = {-sc, -tc, -1.0}; break;
+    }
+    return glm::normalize(d);
+}
+
+CubeFaceBasis cube_face_basis(int face) {
+    // s grows along `right` and t along `up`: a face rendered with this basis into a GL
+    // framebuffer (row 0 at the bottom) reads back with rows in the face's memory order.
+    const glm::dvec3 centre = cube_face_direction(face, 0.5, 0.5);
+    const glm::dvec3 right = cube_face_direction(face, 1.0, 0.5) * std::sqrt(2.0) - centre;
+    const glm::dvec3 up = cube_face_direction(face, 0.5, 1.0) * std::sqrt(2.0) - centre;
+    return {centre, glm::normalize(right), glm::normalize(up)};
+}
+
+Result<EnvironmentCube> EnvironmentCube::allocate(int face_size) {
+    if (face_size < 1 || face_size > 4096) {
+        return Error{"environment cube: face size " + std::to_string(face_size) +
+                     " is outside 1..4096"};
+    }
+    EnvironmentCube cube;
+    cube.face_size_ = face_size;
+    cube.texture_ = make_texture();
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture_.get());
+    for (int face = 0; face < 6; ++face) {
+        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA16F, face_size, face_size,
+                     0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+    }
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    auto ok = gl_check("environment cube: allocate");
+    if (!ok) return Error{ok.error()};
+    return cube;
+}
+
+Result<EnvironmentCube> EnvironmentCube::from_environment(const Environment& environment,
+                                                          int face_size) {
+    auto cube = allocate(face_size);
+    if (!cube) return cube;
+    std::vector<glm::vec4> texels(static_cast<std::size_t>(face_size) * face_size);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, cube.value().texture());
+    for (int face = 0; face < 6; ++face) {
+        for (int t = 0; t < face_size; ++t) {
+            for (int s = 0; s < face_size; ++s) {
+                const glm::dvec3 d =
+                    cube_face_direction(face, (s + 0.5) / face_size, (t + 0.5) / face_size);
+                texels[static_cast<std::size_t>(t) * face_size + s] =
+                    glm::vec4(glm::vec3(environment.radiance(d)), 1.0f);
+            }
+        }
+        // Float data into a half-float texture: GL converts (ES 3.0 table 3.2 allows
+        // RGBA16F from GL_FLOAT).
+        glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, 0, 0, face_size, face_size,
+                        GL_RGBA, GL_FLOAT, texels.data());
+    }
+    auto ok = gl_check("environment cube: upload");
+    if (!ok) return Error{ok.error()};
+    return cube;
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,47 @@
+#pragma once
+// The virtual cube (DESIGN.md, "The method"): six images of what surrounds the stone, seen
+// from its centre, as one GL cube map in linear RGB (RGBA16F, filtered). Made from an
+// Environment by sampling it at every texel, or rendered (the ring scene, see ring_scene.hpp).
+// Face directions follow the GL cube-map convention (OpenGL ES 3.0 spec, table 3.21), in the
+// stone frame.
+
+#include <array>
+
+#include <glm/glm.hpp>
+
+#include "gpu/gl_handles.hpp"
+#include "render/environment.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+class EnvironmentCube {
+  public:
+    // An empty cube map of `face_size`² per face, to be rendered into.
+    static Result<EnvironmentCube> allocate(int face_size);
+    // Every texel set to `environment`'s radiance toward the texel's centre.
+    static Result<EnvironmentCube> from_environment(const Environment& environment, int face_size);
+
+    GLuint texture() const { return texture_.get(); }
+    int face_size() const { return face_size_; }
+
+  private:
+    EnvironmentCube() = default;
+    Texture texture_;
+    int face_size_ = 0;
+};
+
+// The stone-frame direction through texel coordinates (s, t) in [0, 1]² of cube face `face`
+// (0..5 = +x, -x, +y, -y, +z, -z); t = 0 is the face's first row in memory.
+glm::dvec3 cube_face_direction(int face, double s, double t);
+// The camera basis that renders a face: looks along `forward`, image right and up, such that
+// pixel (s, t) of the rendered face is cube_face_direction(face, s, t) (t = 0 at the bottom
+// row of a GL framebuffer).
+struct CubeFaceBasis {
+    glm::dvec3 forward;
+    glm::dvec3 right;
+    glm::dvec3 up;
+};
+CubeFaceBasis cube_face_basis(int face);
+
+}  // namespace gem::gpu

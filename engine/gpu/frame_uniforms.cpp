@@ -1,0 +1,42 @@
+#include "gpu/frame_uniforms.hpp"
+
+#include <algorithm>
+
+namespace gem::gpu {
+
+void set_camera_uniforms(const Program& program, const Camera& camera) {
+    program.set("u_cam_forward", glm::vec3(camera.forward()));
+    program.set("u_cam_right", glm::vec3(camera.right()));
+    program.set("u_cam_up", glm::vec3(camera.up()));
+    program.set("u_cam_half", glm::vec2(0.5 * camera.width() * camera.pixel_size(),
+                                        0.5 * camera.height() * camera.pixel_size()));
+    program.set("u_cam_distance", static_cast<float>(camera.distance()));
+    program.set("u_cam_start", static_cast<float>(camera.ray_start()));
+}
+
+void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
+    program.set("u_environment", unit);
+    program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
+    const ShadingSettings& s = frame.shading;
+    const int lights = std::min<int>(static_cast<int>(s.lights.size()), kMaxLights);
+    glm::vec4 position[kMaxLights] = {};
+    glm::vec3 colour[kMaxLights] = {};
+    for (int i = 0; i < lights; ++i) {
+        position[i] = glm::vec4(glm::vec3(s.lights[i].position), s.lights[i].directional ? 0.0f : 1.0f);
+        colour[i] = glm::vec3(s.lights[i].colour);
+    }
+    program.set("u_light_count", lights);
+    glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
+    glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    program.set("u_thesis", s.model == ShadingModel::thesis ? 1 : 0);
+    program.set("u_k_s", static_cast<float>(s.k_s));
+    program.set("u_k_st", static_cast<float>(s.k_st));
+    program.set("u_h", static_cast<float>(s.h));
+    program.set("u_alpha", static_cast<float>(s.alpha));
+    program.set("u_stone_colour", glm::vec3(frame.material.body_colour));
+    program.set("u_absorption", glm::vec3(frame.material.absorption_per_mm));
+}
+
+}  // namespace gem::gpu

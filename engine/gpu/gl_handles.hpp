@@ -1,0 +1,81 @@
+#pragma once
+// Move-only owners of GL object names, deleted with the owner (the context must be current).
+
+#include <utility>
+
+#include <GLES3/gl3.h>
+
+namespace gem::gpu {
+
+template <void (*Delete)(GLuint)>
+class GlHandle {
+  public:
+    GlHandle() = default;
+    explicit GlHandle(GLuint name) : name_(name) {}
+    GlHandle(GlHandle&& other) noexcept : name_(std::exchange(other.name_, 0)) {}
+    GlHandle& operator=(GlHandle&& other) noexcept {
+        if (this != &other) {
+            reset();
+            name_ = std::exchange(other.name_, 0);
+        }
+        return *this;
+    }
+    GlHandle(const GlHandle&) = delete;
+    GlHandle& operator=(const GlHandle&) = delete;
+    ~GlHandle() { reset(); }
+
+    GLuint get() const { return name_; }
+    explicit operator bool() const { return name_ != 0; }
+    void reset() {
+        if (name_ != 0) Delete(name_);
+        name_ = 0;
+    }
+
+  private:
+    GLuint name_ = 0;
+};
+
+namespace detail {
+inline void delete_texture(GLuint n) { glDeleteTextures(1, &n); }
+inline void delete_buffer(GLuint n) { glDeleteBuffers(1, &n); }
+inline void delete_framebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
+inline void delete_renderbuffer(GLuint n) { glDeleteRenderbuffers(1, &n); }
+inline void delete_vertex_array(GLuint n) { glDeleteVertexArrays(1, &n); }
+inline void delete_program(GLuint n) { glDeleteProgram(n); }
+inline void delete_query(GLuint n) { glDeleteQueries(1, &n); }
+}  // namespace detail
+
+using Texture = GlHandle<detail::delete_texture>;
+using Buffer = GlHandle<detail::delete_buffer>;
+using Framebuffer = GlHandle<detail::delete_framebuffer>;
+using Renderbuffer = GlHandle<detail::delete_renderbuffer>;
+using VertexArray = GlHandle<detail::delete_vertex_array>;
+using ProgramHandle = GlHandle<detail::delete_program>;
+
+inline Texture make_texture() {
+    GLuint n = 0;
+    glGenTextures(1, &n);
+    return Texture(n);
+}
+inline Buffer make_buffer() {
+    GLuint n = 0;
+    glGenBuffers(1, &n);
+    return Buffer(n);
+}
+inline Framebuffer make_framebuffer() {
+    GLuint n = 0;
+    glGenFramebuffers(1, &n);
+    return Framebuffer(n);
+}
+inline Renderbuffer make_renderbuffer() {
+    GLuint n = 0;
+    glGenRenderbuffers(1, &n);
+    return Renderbuffer(n);
+}
+inline VertexArray make_vertex_array() {
+    GLuint n = 0;
+    glGenVertexArrays(1, &n);
+    return VertexArray(n);
+}
+
+}  // namespace gem::gpu

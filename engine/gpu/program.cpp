@@ -1,0 +1,102 @@
+#include "gpu/program.hpp"
+
+#include "gpu/shader_sources.hpp"
+
+namespace gem::gpu {
+namespace {
+
+std::string join(const std::vector<std::string>& names) {
+    std::string out;
+    for (const std::string& n : names) out += (out.empty() ? "" : "+") + n;
+    return out;
+}
+
+std::string info_log(GLuint object, bool program) {
+    GLint length = 0;
+    program ? glGetProgramiv(object, GL_INFO_LOG_LENGTH, &length)
+            : glGetShaderiv(object, GL_INFO_LOG_LENGTH, &length);
+    std::string log(static_cast<std::size_t>(length > 0 ? length : 1), '\0');
+    GLsizei written = 0;
+    program ? glGetProgramInfoLog(object, length, &written, log.data())
+            : glGetShaderInfoLog(object, length, &written, log.data());
+    log.resize(static_cast<std::size_t>(written));
+    while (!log.empty() && (log.back() == '\n' || log.back() == '\0')) log.pop_back();
+    return log;
+}
+
+// Compiles one stage; the shader object is returned on success and deleted on failure.
+Result<GLuint> compile(const ProgramSpec& spec, GLenum stage, const std::vector<std::string>& names) {
+    const char* stage_name = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
+    const std::string where =
+        "program '" + spec.name + "', " + stage_name + " shader " + join(names);
+    // Every stage sees the same header; "#line 1 N" restarts line numbers per chunk, so the
+    // driver's "0:12" reads as chunk 0, line 12 and the log below names the chunks in order.
+    std::string text = "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+                       "precision highp sampler2D;\nprecision highp usampler2D;\n"
+                       "precision highp isampler2D;\nprecision highp samplerCube;\n";
+    for (const std::string& d : spec.defines) text += "#define " + d + "\n";
+    for (std::size_t i = 0; i < names.size(); ++i) {
+        auto chunk = shader_text(names[i]);
+        if (!chunk) return Error{where + ": " + chunk.error()};
+        text += "#line 1 " + std::to_string(i) + "\n";
+        text += chunk.value();
+        text += "\n";
+    }
+    const GLuint shader = glCreateShader(stage);
+    const char* source = text.c_str();
+    glShaderSource(shader, 1, &source, nullptr);
+    glCompileShader(shader);
+    GLint ok = GL_FALSE;
+    glGetShaderiv(shader, GL_COMPILE_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        std::string log = info_log(shader, false);
+        glDeleteShader(shader);
+        return Error{where + " does not compile (source N = chunk N above):\n" + log};
+    }
+    return shader;
+}
+
+}  // namespace
+
+Result<std::string_view> shader_text(std::string_view name) {
+    for (const ShaderSource& s : shader_sources()) {
+        if (s.name == name) return s.text;
+    }
+    return Error{"no embedded shader named '" + std::string(name) + "'"};
+}
+
+Result<Program> Program::build(const ProgramSpec& spec) {
+    auto vertex = compile(spec, GL_VERTEX_SHADER, spec.vertex);
+    if (!vertex) return Error{vertex.error()};
+    auto fragment = compile(spec, GL_FRAGMENT_SHADER, spec.fragment);
+    if (!fragment) {
+        glDeleteShader(vertex.value());
+        return Error{fragment.error()};
+    }
+    Program p;
+    p.name_ = spec.name;
+    p.program_ = ProgramHandle(glCreateProgram());
+    glAttachShader(p.program_.get(), vertex.value());
+    glAttachShader(p.program_.get(), fragment.value());
+    glLinkProgram(p.program_.get());
+    // Shaders are flagged for deletion now and go with the program.
+    glDeleteShader(vertex.value());
+    glDeleteShader(fragment.value());
+    GLint ok = GL_FALSE;
+    glGetProgramiv(p.program_.get(), GL_LINK_STATUS, &ok);
+    if (ok != GL_TRUE) {
+        return Error{"program '" + spec.name + "' does not link:\n" +
+                     info_log(p.program_.get(), true)};
+    }
+    return p;
+}
+
+GLint Program::uniform(const char* name) const {
+    auto it = locations_.find(name);
+    if (it != locations_.end()) return it->second;
+    const GLint location = glGetUniformLocation(program_.get(), name);
+    locations_.emplace(name, location);
+    return location;
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,64 @@
+#pragma once
+// A linked GLSL ES 3.00 program built from the embedded sources (shader_sources.hpp). Every
+// stage starts with "#version 300 es", high precision and the given #defines, then the named
+// chunks in order. Compile and link failures name the program, the stage and its files, and
+// carry the driver's log.
+
+#include <initializer_list>
+#include <string>
+#include <string_view>
+#include <unordered_map>
+#include <vector>
+
+#include <GLES3/gl3.h>
+#include <glm/glm.hpp>
+
+#include "gpu/gl_handles.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+struct ProgramSpec {
+    std::string name;                    // for messages: "table"
+    std::vector<std::string> vertex;     // chunk names, main file last
+    std::vector<std::string> fragment;   // chunk names, main file last
+    std::vector<std::string> defines;    // "NON_CONVEX", "MAX_LIGHTS 4"
+};
+
+class Program {
+  public:
+    static Result<Program> build(const ProgramSpec& spec);
+
+    GLuint id() const { return program_.get(); }
+    const std::string& name() const { return name_; }
+    void use() const { glUseProgram(program_.get()); }
+    // -1 when the program has no such active uniform (the driver may drop unused ones).
+    GLint uniform(const char* name) const;
+
+    // Setters on the program in use; a missing uniform is silently skipped, as GL does.
+    void set(const char* name, int v) const { glUniform1i(uniform(name), v); }
+    void set(const char* name, float v) const { glUniform1f(uniform(name), v); }
+    void set(const char* name, const glm::vec2& v) const { glUniform2fv(uniform(name), 1, &v.x); }
+    void set(const char* name, const glm::vec3& v) const { glUniform3fv(uniform(name), 1, &v.x); }
+    void set(const char* name, const glm::vec4& v) const { glUniform4fv(uniform(name), 1, &v.x); }
+    void set(const char* name, const glm::mat2& m) const {
+        glUniformMatrix2fv(uniform(name), 1, GL_FALSE, &m[0][0]);
+    }
+    void set(const char* name, const glm::mat3& m) const {
+        glUniformMatrix3fv(uniform(name), 1, GL_FALSE, &m[0][0]);
+    }
+    void set(const char* name, const glm::mat4& m) const {
+        glUniformMatrix4fv(uniform(name), 1, GL_FALSE, &m[0][0]);
+    }
+
+  private:
+    Program() = default;
+    ProgramHandle program_;
+    std::string name_;
+    mutable std::unordered_map<std::string, GLint> locations_;
+};
+
+// The text of one embedded source; an error names a missing one.
+Result<std::string_view> shader_text(std::string_view name);
+
+}  // namespace gem::gpu

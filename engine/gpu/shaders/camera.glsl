@@ -1,0 +1,19 @@
+// The pixel ray of engine/render/camera.cpp's Camera::ray, per fragment, in the stone frame.
+uniform vec3 u_cam_forward;
+uniform vec3 u_cam_right;
+uniform vec3 u_cam_up;
+uniform vec2 u_cam_half;       // half the image's extent: mm (orthographic) or tangent units
+uniform float u_cam_distance;  // eye distance (perspective); 0: orthographic
+uniform float u_cam_start;     // orthographic rays start this far behind the centre
+
+// ndc: -1..1 across the viewport, y up.
+void camera_ray(vec2 ndc, out vec3 origin, out vec3 direction) {
+    vec2 s = ndc * u_cam_half;
+    if (u_cam_distance > 0.0) {
+        origin = -u_cam_forward * u_cam_distance;
+        direction = normalize(u_cam_forward + s.x * u_cam_right + s.y * u_cam_up);
+    } else {
+        origin = -u_cam_forward * u_cam_start + s.x * u_cam_right + s.y * u_cam_up;
+        direction = u_cam_forward;
+    }
+}

@@ -1,0 +1,119 @@
+// Shading shared by the table and trace methods (DESIGN.md, "The method", eq. 6.2-6.5), the
+// GPU twin of engine/render/shading.cpp: everything here works in the stone frame (mm).
+//  physical: w_r (E(r) + k_s L(r)) + sum_n w_n exp(-sigma path_n) (E(t_n) + k_st L(t_n))
+//  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))
+// E is the environment through the virtual cube, L the lights' specular lobes with the
+// obstruction test.
+
+#ifndef MAX_LIGHTS
+#define MAX_LIGHTS 4
+#endif
+
+uniform samplerCube u_environment;
+uniform float u_cube_half_mm;  // the virtual cube's half side about the stone's centre; 0: at infinity
+uniform int u_light_count;
+uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
+uniform vec3 u_light_colour[MAX_LIGHTS];
+uniform int u_thesis;  // 1: the thesis' R/T-factor shading; 0: physical
+uniform float u_k_s;
+uniform float u_k_st;
+uniform float u_h;
+uniform float u_alpha;
+uniform vec3 u_stone_colour;  // I_o
+uniform vec3 u_absorption;    // Beer-Lambert sigma per channel, 1/mm
+
+// Facet planes, one texel each (n.xyz, d): n.p = d on the facet. Row-major, kTexWidth wide.
+uniform highp sampler2D u_planes;
+#ifdef NON_CONVEX
+// Triangles, three texels each (a vertex per texel, w unused).
+uniform highp sampler2D u_triangles;
+uniform int u_triangle_count;
+#endif
+
+const int kTexWidth = 1024;
+
+ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
+
+vec4 facet_plane(int facet) { return texelFetch(u_planes, texel_of(facet), 0); }
+
+// Where the ray from p along d meets the virtual cube, as a cube-map lookup direction: the
+// six images were taken from the stone's centre, so the exit point matters, not only d.
+vec3 environment(vec3 p, vec3 d) {
+    if (u_cube_half_mm <= 0.0) return texture(u_environment, d).rgb;
+    vec3 far_side = (sign(d) * u_cube_half_mm - p) / d;  // per-axis distance to the far face
+    float t = min(far_side.x, min(far_side.y, far_side.z));
+    return texture(u_environment, p + max(t, 0.0) * d).rgb;
+}
+
+#ifdef NON_CONVEX
+// Moller & Trumbore (1997); true when the segment from o along d meets a triangle before limit.
+bool hits_triangle(vec3 o, vec3 d, int tri, float limit) {
+    vec3 a = texelFetch(u_triangles, texel_of(3 * tri), 0).xyz;
+    vec3 b = texelFetch(u_triangles, texel_of(3 * tri + 1), 0).xyz;
+    vec3 c = texelFetch(u_triangles, texel_of(3 * tri + 2), 0).xyz;
+    vec3 e1 = b - a;
+    vec3 e2 = c - a;
+    vec3 q = cross(d, e2);
+    float det = dot(e1, q);
+    if (abs(det) < 1e-12) return false;
+    float inv = 1.0 / det;
+    vec3 s = o - a;
+    float u = dot(s, q) * inv;
+    if (u < 0.0 || u > 1.0) return false;
+    vec3 r = cross(s, e1);
+    float v = dot(d, r) * inv;
+    if (v < 0.0 || u + v > 1.0) return false;
+    float t = dot(e2, r) * inv;
+    return t > 0.0 && t < limit;
+}
+#endif
+
+// The thesis' obstruction test: the leaving facet must face the light, and (non-convex stones)
+// no other part of the stone may lie between the exit point and the light.
+bool light_blocked(vec3 p, vec3 facet_normal, vec3 to_light, float distance_to_light) {
+    if (dot(facet_normal, to_light) <= 0.0) return true;
+#ifdef NON_CONVEX
+    vec3 o = p + facet_normal * 1e-4;
+    for (int i = 0; i < u_triangle_count; ++i) {
+        if (hits_triangle(o, to_light, i, distance_to_light)) return true;
+    }
+#endif
+    return false;
+}
+
+// Sum over the lights of colour * k * (d.L)^h for the ray leaving p along d through a facet
+// with outward normal n.
+vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
+    vec3 sum = vec3(0.0);
+    if (k == 0.0) return sum;
+    for (int i = 0; i < MAX_LIGHTS; ++i) {
+        if (i >= u_light_count) break;
+        vec4 lp = u_light_position[i];
+        vec3 to_light = lp.w > 0.5 ? lp.xyz - p : lp.xyz;
+        float distance_to_light = lp.w > 0.5 ? length(to_light) : 1e30;
+        to_light = normalize(to_light);
+        float c = dot(d, to_light);
+        if (c <= 0.0) continue;
+        if (light_blocked(p, n, to_light, distance_to_light)) continue;
+        sum += u_light_colour[i] * (k * pow(c, u_h));
+    }
+    return sum;
+}
+
+// The first reflected ray's share of the pixel.
+vec3 shade_reflected(vec3 p, vec3 d, vec3 n, float weight) {
+    vec3 env = environment(p, d);
+    if (u_thesis == 0) return weight * (env + light_specular(p, d, n, u_k_s));
+    return weight * (light_specular(p, d, n, u_k_s) + env * u_alpha +
+                     u_stone_colour * (1.0 - u_alpha));
+}
+
+// One exit ray's share; `env` is what the ray sees (per channel when dispersed).
+vec3 shade_exit(vec3 p, vec3 d, vec3 n, float weight, float path_mm, vec3 env) {
+    if (u_thesis == 0) {
+        vec3 transmittance = exp(-u_absorption * path_mm);
+        return weight * transmittance * (env + light_specular(p, d, n, u_k_st));
+    }
+    return weight * (u_stone_colour * light_specular(p, d, n, u_k_st) + env * u_alpha +
+                     u_stone_colour * (1.0 - u_alpha));
+}

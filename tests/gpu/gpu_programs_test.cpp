@@ -1,0 +1,58 @@
+// Every GPU program compiles and links as GLSL ES 3.00 on an ES 3.0 context, and a bad
+// shader's failure names the program and carries the driver's log.
+#include <gtest/gtest.h>
+
+#include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
+#include "gpu_test_support.hpp"
+
+namespace gem {
+namespace {
+
+TEST(GpuPrograms, ContextIsOpenGlEs3) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    GLint major = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &major);
+    EXPECT_GE(major, 3) << ctx.value()->description();
+}
+
+TEST(GpuPrograms, EveryProgramBuilds) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const auto specs = gpu::all_program_specs();
+    ASSERT_FALSE(specs.empty());
+    for (const gpu::ProgramSpec& spec : specs) {
+        auto program = gpu::Program::build(spec);
+        EXPECT_TRUE(program.ok()) << program.error();
+    }
+    auto clean = gpu::gl_check("building every program");
+    EXPECT_TRUE(clean.ok()) << clean.error();
+}
+
+TEST(GpuPrograms, MissingChunkIsNamed) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto program = gpu::Program::build({"broken", {"fullscreen.vert"}, {"no_such.frag"}, {}});
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.error().find("no_such.frag"), std::string::npos) << program.error();
+    EXPECT_NE(program.error().find("'broken'"), std::string::npos) << program.error();
+}
+
+TEST(GpuPrograms, CompileErrorCarriesTheLog) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    // A define that turns a uniform's declaration into a syntax error.
+    auto program = gpu::Program::build({"undeclared",
+                                        {"fullscreen.vert"},
+                                        {"camera.glsl", "background.frag"},
+                                        {"u_background_colour 1.0 +"}});
+    ASSERT_FALSE(program.ok());
+    EXPECT_NE(program.error().find("fragment shader camera.glsl+background.frag"),
+              std::string::npos)
+        << program.error();
+    EXPECT_NE(program.error().find("does not compile"), std::string::npos) << program.error();
+}
+
+}  // namespace
+}  // namespace gem

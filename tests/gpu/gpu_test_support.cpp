@@ -1,0 +1,52 @@
+#include "gpu_test_support.hpp"
+
+#include <cmath>
+#include <limits>
+#include <memory>
+
+namespace gem::gpu_test {
+
+Result<gpu::EglContext*> context() {
+    static Result<gpu::EglContext> made = gpu::EglContext::headless();
+    if (!made) return Error{made.error()};
+    return &made.value();
+}
+
+double psnr_srgb8(const Image& a, const Image& b, bool only_stone) {
+    const std::vector<std::uint8_t> x = to_srgb8(a, 4);
+    const std::vector<std::uint8_t> y = to_srgb8(b, 4);
+    double sum = 0.0;
+    std::size_t n = 0;
+    for (std::size_t p = 0; p + 3 < x.size() && p + 3 < y.size(); p += 4) {
+        if (only_stone && x[p + 3] < 128 && y[p + 3] < 128) continue;
+        for (int c = 0; c < 3; ++c) {
+            const double d = double(x[p + c]) - double(y[p + c]);
+            sum += d * d;
+        }
+        n += 3;
+    }
+    if (n == 0 || sum == 0.0) return std::numeric_limits<double>::infinity();
+    const double mse = sum / static_cast<double>(n);
+    return 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+std::filesystem::path write_artifact(const Image& image, const std::string& name) {
+    const std::filesystem::path dir(GEM_ARTIFACT_DIR);
+    std::error_code ec;
+    std::filesystem::create_directories(dir, ec);
+    const std::filesystem::path path = dir / (name + ".png");
+    (void)write_png(image, path, true);
+    return path;
+}
+
+Image difference_image(const Image& a, const Image& b, float gain) {
+    Image out(a.width, a.height, glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
+    if (a.width != b.width || a.height != b.height) return out;
+    for (std::size_t p = 0; p < out.pixels.size(); ++p) {
+        const glm::vec3 d = glm::abs(glm::vec3(a.pixels[p]) - glm::vec3(b.pixels[p])) * gain;
+        out.pixels[p] = glm::vec4(glm::min(d, glm::vec3(1.0f)), 1.0f);
+    }
+    return out;
+}
+
+}  // namespace gem::gpu_test

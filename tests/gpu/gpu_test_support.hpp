@@ -1,0 +1,27 @@
+#pragma once
+// What the headless GPU tests share: one EGL context for the whole test program (made on
+// first use; every test fails with EGL's message if there is none), image comparison in
+// 8-bit sRGB (PSNR, as people see the images), and failure artefacts in GEM_ARTIFACT_DIR.
+
+#include <filesystem>
+#include <string>
+
+#include "gpu/egl_context.hpp"
+#include "render/image.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu_test {
+
+// The context, current on the calling thread; an error when EGL cannot make one.
+Result<gpu::EglContext*> context();
+
+// Peak signal-to-noise ratio of the 8-bit sRGB RGB channels over the pixels where `mask`
+// (when given) has alpha > 0.5 in either image; infinity for identical images.
+double psnr_srgb8(const Image& a, const Image& b, bool only_stone = false);
+
+// Writes `image` to GEM_ARTIFACT_DIR/name.png and returns the path (for failure messages).
+std::filesystem::path write_artifact(const Image& image, const std::string& name);
+// An image of |a − b| × gain per channel, to look at when a comparison fails.
+Image difference_image(const Image& a, const Image& b, float gain = 4.0f);
+
+}  // namespace gem::gpu_test
