@@ -18,7 +18,7 @@ Result<BackgroundPass> BackgroundPass::make() {
 Result<bool> BackgroundPass::draw(const Camera& camera, const EnvironmentCube& environment,
                                   std::optional<glm::vec3> colour) const {
     program_.use();
-    set_camera_uniforms(program_, camera);
+    set_camera_uniforms(program_, camera, 1.0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
     program_.set("u_environment", 0);

@@ -4,7 +4,42 @@
 
 namespace gem::gpu {
 
-void set_camera_uniforms(const Program& program, const Camera& camera) {
+glm::mat4 view_projection(const Camera& camera, double scene_radius_mm) {
+    const glm::dvec3 f = camera.forward();
+    const glm::dvec3 r = camera.right();
+    const glm::dvec3 u = camera.up();
+    const double half_w = 0.5 * camera.width() * camera.pixel_size();
+    const double half_h = 0.5 * camera.height() * camera.pixel_size();
+    const double radius = scene_radius_mm;
+    glm::dmat4 m(0.0);  // column-major: m[column][row]
+    if (camera.orthographic()) {
+        // ndc = (p·r / half_w, p·u / half_h, p·f / radius)
+        for (int i = 0; i < 3; ++i) {
+            m[i][0] = r[i] / half_w;
+            m[i][1] = u[i] / half_h;
+            m[i][2] = f[i] / radius;
+        }
+        m[3][3] = 1.0;
+    } else {
+        // Eye at -f·D; view depth z = D + p·f; x_ndc = (p·r) / (z half_w) with half_w in
+        // tangent units; depth maps z = D − R .. D + R onto −1..1 as a GL perspective does.
+        const double dist = camera.distance();
+        const double n = std::max(dist - radius, 1e-3 * dist);
+        const double fa = dist + radius;
+        for (int i = 0; i < 3; ++i) {
+            m[i][0] = r[i] / half_w;
+            m[i][1] = u[i] / half_h;
+            m[i][2] = f[i] * (fa + n) / (fa - n);
+            m[i][3] = f[i];
+        }
+        m[3][2] = dist * (fa + n) / (fa - n) - 2.0 * fa * n / (fa - n);
+        m[3][3] = dist;
+    }
+    return glm::mat4(m);
+}
+
+void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm) {
+    program.set("u_view_projection", view_projection(camera, scene_radius_mm));
     program.set("u_cam_forward", glm::vec3(camera.forward()));
     program.set("u_cam_right", glm::vec3(camera.right()));
     program.set("u_cam_up", glm::vec3(camera.up()));

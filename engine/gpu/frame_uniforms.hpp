@@ -17,9 +17,18 @@ struct StoneFrame {
     ShadingSettings shading;
     const EnvironmentCube* environment = nullptr;
     double cube_half_mm = 0.0;  // the virtual cube's half side; 0 puts it at infinity
+    double scene_radius_mm = 10.0;  // holds everything drawn (depth range, view_projection)
 };
 
-void set_camera_uniforms(const Program& program, const Camera& camera);
+// Sets camera.glsl's uniforms, u_view_projection among them.
+void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm);
+
+// The matrix that rasterises exactly what Camera::ray sees: clip x and y span the image
+// (right, up), depth runs front to back over the sphere of radius `scene_radius_mm` about the
+// stone's centre (everything drawn must lie inside it: the ring as well as the stone). The
+// stone methods write their entry point's depth with it, so a ring drawn after them is hidden
+// behind the stone and hides it in turn.
+glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 // Binds the environment cube to texture unit `unit`.
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit);
 

@@ -5,6 +5,22 @@ namespace gem::gpu {
 std::vector<ProgramSpec> all_program_specs() {
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
+        // The thesis' shading stage from ray-tables (table_method.hpp).
+        {"table", {"fullscreen.vert"}, {"camera.glsl", "shading.glsl", "table.frag"}, {}},
+        {"table_non_convex",
+         {"fullscreen.vert"},
+         {"camera.glsl", "shading.glsl", "table.frag"},
+         {"NON_CONVEX"}},
+        // Per-pixel tracing in the fragment shader (trace_method.hpp).
+        {"trace", {"fullscreen.vert"}, {"camera.glsl", "shading.glsl", "trace.frag"}, {}},
+        {"trace_non_convex",
+         {"fullscreen.vert"},
+         {"camera.glsl", "shading.glsl", "trace.frag"},
+         {"NON_CONVEX"}},
+        // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
+        {"phong", {"phong.vert"}, {"phong.frag"}, {}},
+        // The ring's metal, physically based (ring_renderer.hpp).
+        {"ring", {"ring.vert"}, {"ring.frag"}, {}},
     };
 }
 

@@ -17,3 +17,11 @@ void camera_ray(vec2 ndc, out vec3 origin, out vec3 direction) {
         direction = u_cam_forward;
     }
 }
+
+uniform mat4 u_view_projection;  // frame_uniforms.hpp: view_projection()
+
+// Window depth (0..1) of a stone-frame point, as the rasteriser would write it.
+float window_depth(vec3 p) {
+    vec4 clip = u_view_projection * vec4(p, 1.0);
+    return clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
+}
