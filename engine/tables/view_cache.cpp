@@ -172,26 +172,45 @@ AcquiredView ViewCache::acquire(const glm::dvec3& direction, std::uint32_t wante
     }
     out.exact ? ++stats_.hits : ++stats_.misses;
 
-    const std::uint32_t nearest = near[0].view;
-    if (!out.exact) {
-        // The wanted level first, the coarse one on top of it: it is cheap and shows the
-        // right direction soon.
-        enqueue(key(nearest, wanted_level), Kind::demand, ++demand_counter_);
-        if (wanted_level > 0 && best_level(nearest, wanted_level) < 0) {
-            enqueue(key(nearest, 0), Kind::demand, ++demand_counter_);
-        }
-        if (queue_.size() > options_.max_demand_requests) {
-            // Frames ask every few milliseconds; requests the camera has left behind go.
-            const std::uint64_t keep_from = demand_counter_ >= options_.max_demand_requests
-                                                ? demand_counter_ - options_.max_demand_requests
-                                                : 0;
-            std::erase_if(queue_, [&](const Request& r) {
-                return r.kind == Kind::demand && r.order <= keep_from;
-            });
-        }
-        work_ready_.notify_one();
-    }
+    if (!out.exact) demand(near[0].view, wanted_level);
     return out;
+}
+
+AcquiredView ViewCache::acquire_view(const ViewMatch& match, std::uint32_t wanted_level) {
+    wanted_level = std::min(wanted_level, levels_ - 1);
+    AcquiredView out;
+    out.match = match;
+    std::lock_guard lock(mutex_);
+    const int level = best_level(match.view, wanted_level);
+    if (level >= 0) {
+        Entry& entry = resident_.at(key(match.view, static_cast<std::uint32_t>(level)));
+        touch(entry);
+        out.view = entry.view;
+        out.level = static_cast<std::uint32_t>(level);
+        out.exact = out.level == wanted_level;
+    }
+    out.exact ? ++stats_.hits : ++stats_.misses;
+    if (!out.exact) demand(match.view, wanted_level);
+    return out;
+}
+
+void ViewCache::demand(std::uint32_t view, std::uint32_t wanted_level) {
+    // The wanted level first, the coarse one on top of it: it is cheap and shows the right
+    // direction soon.
+    enqueue(key(view, wanted_level), Kind::demand, ++demand_counter_);
+    if (wanted_level > 0 && best_level(view, wanted_level) < 0) {
+        enqueue(key(view, 0), Kind::demand, ++demand_counter_);
+    }
+    if (queue_.size() > options_.max_demand_requests) {
+        // Frames ask every few milliseconds; requests the camera has left behind go.
+        const std::uint64_t keep_from = demand_counter_ >= options_.max_demand_requests
+                                            ? demand_counter_ - options_.max_demand_requests
+                                            : 0;
+        std::erase_if(queue_, [&](const Request& r) {
+            return r.kind == Kind::demand && r.order <= keep_from;
+        });
+    }
+    work_ready_.notify_one();
 }
 
 std::size_t ViewCache::prefetch(const glm::dvec3& direction, const glm::dvec3& angular_velocity,

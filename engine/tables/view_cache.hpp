@@ -110,6 +110,11 @@ class ViewCache {
     // nearest view: its coarsest level first, then the wanted one.
     AcquiredView acquire(const glm::dvec3& direction, std::uint32_t wanted_level);
 
+    // The same for one given stored view (a blend's second view): that view at the wanted
+    // level or the resident level nearest below (then above) it, else nothing; queues it
+    // when not exact. Never a stand-in from another view.
+    AcquiredView acquire_view(const ViewMatch& match, std::uint32_t wanted_level);
+
     // Queues, below every demand request, the stored views the camera will pass within the
     // prefetch horizon when its view direction turns with `angular_velocity` (axis × rad/s,
     // stone frame): every such view at the coarsest level first, nearest in time first, then
@@ -142,6 +147,7 @@ class ViewCache {
     Key key(std::uint32_t view, std::uint32_t level) const;
     // All with mutex_ held.
     void enqueue(Key k, Kind kind, std::uint64_t order);
+    void demand(std::uint32_t view, std::uint32_t wanted_level);
     bool wanted(Key k) const;
     std::size_t next_request() const;
     int best_level(std::uint32_t view, std::uint32_t wanted_level) const;

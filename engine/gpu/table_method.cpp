@@ -1,0 +1,258 @@
+#include "gpu/table_method.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <vector>
+
+#include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
+
+namespace gem::gpu {
+namespace {
+
+using Clock = std::chrono::steady_clock;
+
+double ms_since(Clock::time_point start) {
+    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+}
+
+// Dominant wavelengths of the sRGB primaries (R 612, G 549, B 465 nm), where each channel's
+// exit direction is evaluated from the stored d(direction)/dn.
+constexpr double kChannelNm[3] = {612.0, 549.0, 465.0};
+
+}  // namespace
+
+struct TableMethod::GpuView {
+    std::shared_ptr<const DecodedView> source;  // identifies what is uploaded
+    std::uint32_t view = 0;
+    std::uint32_t level = 0;
+    int side = 0;
+    Texture pixels;
+    Texture rays_a;
+    Texture rays_b;
+    Texture rays_c;
+};
+
+TableMethod::TableMethod(TableMethod&&) noexcept = default;
+TableMethod& TableMethod::operator=(TableMethod&&) noexcept = default;
+TableMethod::~TableMethod() = default;
+
+Result<TableMethod> TableMethod::make(std::shared_ptr<const Database> database,
+                                      const TableOptions& options) {
+    TableMethod m;
+    m.database_ = std::move(database);
+    m.options_ = options;
+    auto stone = StoneTextures::upload(m.database_->stone());
+    if (!stone) return Error{stone.error()};
+    m.stone_ = std::make_unique<StoneTextures>(std::move(stone).value());
+    auto program = build_program(m.database_->stone().convex ? "table" : "table_non_convex");
+    if (!program) return Error{program.error()};
+    m.program_ = std::make_unique<Program>(std::move(program).value());
+    m.empty_ = make_vertex_array();
+    m.cache_ = std::make_unique<ViewCache>(std::make_shared<DatabaseViewSource>(m.database_),
+                                           options.cache);
+    return m;
+}
+
+std::uint32_t TableMethod::level_for(double pixels_across) const {
+    const auto& levels = database_->params().levels;
+    for (std::uint32_t i = 0; i < levels.size(); ++i) {
+        if (levels[i] >= pixels_across) return i;
+    }
+    return static_cast<std::uint32_t>(levels.size() - 1);
+}
+
+Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acquired,
+                                                        TableFrameStats& stats) {
+    for (std::size_t i = 0; i < gpu_views_.size(); ++i) {
+        if (gpu_views_[i]->source == acquired.view) {
+            std::rotate(gpu_views_.begin(), gpu_views_.begin() + static_cast<long>(i),
+                        gpu_views_.begin() + static_cast<long>(i) + 1);
+            return gpu_views_.front().get();
+        }
+    }
+    const auto start = Clock::now();
+    const DecodedView& v = *acquired.view;
+    auto view = std::make_unique<GpuView>();
+    view->source = acquired.view;
+    view->view = acquired.match.view;
+    view->level = acquired.level;
+    view->side = static_cast<int>(v.side);
+
+    std::vector<std::uint32_t> pixels(2 * v.ray_count.size());
+    for (std::size_t p = 0; p < v.ray_count.size(); ++p) {
+        pixels[2 * p] = v.ray_offset[p];
+        pixels[2 * p + 1] = v.ray_count[p];
+    }
+    view->pixels = make_texture();
+    glBindTexture(GL_TEXTURE_2D, view->pixels.get());
+    glTexImage2D(GL_TEXTURE_2D, 0, GL_RG32UI, view->side, view->side, 0, GL_RG_INTEGER,
+                 GL_UNSIGNED_INT, pixels.data());
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+
+    const std::size_t rays = v.direction.size();
+    std::vector<float> a(4 * rays);
+    std::vector<float> b(4 * rays);
+    std::vector<float> c(4 * rays, 0.0f);
+    for (std::size_t r = 0; r < rays; ++r) {
+        a[4 * r + 0] = v.direction[r].x;
+        a[4 * r + 1] = v.direction[r].y;
+        a[4 * r + 2] = v.direction[r].z;
+        a[4 * r + 3] = v.weight[r];
+        b[4 * r + 0] = v.position[r].x;
+        b[4 * r + 1] = v.position[r].y;
+        b[4 * r + 2] = v.position[r].z;
+        b[4 * r + 3] = v.path_mm[r];
+        if (!v.dir_dn.empty()) {
+            c[4 * r + 0] = v.dir_dn[r].x;
+            c[4 * r + 1] = v.dir_dn[r].y;
+            c[4 * r + 2] = v.dir_dn[r].z;
+        }
+        c[4 * r + 3] = static_cast<float>(v.facet[r]);
+    }
+    auto ta = upload_texel_array(a.data(), rays, "table view rays");
+    if (!ta) return Error{ta.error()};
+    auto tb = upload_texel_array(b.data(), rays, "table view rays");
+    if (!tb) return Error{tb.error()};
+    auto tc = upload_texel_array(c.data(), rays, "table view rays");
+    if (!tc) return Error{tc.error()};
+    view->rays_a = std::move(ta).value();
+    view->rays_b = std::move(tb).value();
+    view->rays_c = std::move(tc).value();
+    auto ok = gl_check("table method: view upload");
+    if (!ok) return Error{ok.error()};
+
+    // Two for a blend and one on its way in; older ones go.
+    constexpr std::size_t kGpuViews = 3;
+    gpu_views_.insert(gpu_views_.begin(), std::move(view));
+    if (gpu_views_.size() > kGpuViews) gpu_views_.pop_back();
+    ++stats.uploads;
+    stats.upload_ms += ms_since(start);
+    return gpu_views_.front().get();
+}
+
+Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_out) {
+    TableFrameStats stats;
+    const Camera& camera = frame.camera;
+    const CameraModel& model = database_->camera();
+    const bool perspective = model.kind == CameraModel::Kind::perspective;
+    if (perspective == camera.orthographic() ||
+        (perspective && std::abs(camera.distance() - model.distance_mm) > 1e-6 * model.distance_mm)) {
+        return Error{"table method: the camera must be " +
+                     std::string(perspective ? "perspective at " + std::to_string(model.distance_mm) +
+                                                   " mm, as the database was built"
+                                             : "orthographic, as the database was built")};
+    }
+    const double image_scale = perspective ? camera.distance() : 1.0;
+    const double pixels_across = model.field_mm / (camera.pixel_size() * image_scale);
+    const std::uint32_t wanted = level_for(pixels_across);
+    const glm::dvec3 asked = -camera.forward();
+    const ViewGrid& grid = database_->grid();
+
+    auto start = Clock::now();
+    AcquiredView first = cache_->acquire(asked, wanted);
+    std::array<ViewMatch, 3> near{};
+    const std::size_t found = options_.blend ? grid.nearest_k(asked, near) : 0;
+    AcquiredView second;
+    double blend = 1.0;
+    // Blend only when the nearest view itself is shown (not a stand-in for it). Weights fall
+    // linearly to zero at the third view's angle, so they are continuous as views change
+    // rank: w0 ∝ a2 − a0, w1 ∝ a2 − a1.
+    if (found == 3 && near[2].angle - near[0].angle > 0.0) {
+        const double w0 = near[2].angle - near[0].angle;
+        const double w1 = near[2].angle - near[1].angle;
+        blend = w0 / (w0 + w1);
+        if (first.view && first.match.view == near[0].view &&
+            first.match.symmetry == near[0].symmetry) {
+            second = cache_->acquire_view(near[1], wanted);
+        }
+    }
+    stats.acquire_ms = ms_since(start);
+    if (options_.wait_for_views && (!first.exact || (second.view && !second.exact) ||
+                                    (blend < 1.0 && !second.view))) {
+        start = Clock::now();
+        cache_->wait_idle(std::chrono::seconds(60));
+        first = cache_->acquire(asked, wanted);
+        if (blend < 1.0) {
+            second = cache_->acquire_view(near[1], wanted);
+            if (!second.exact) {
+                cache_->wait_idle(std::chrono::seconds(60));
+                second = cache_->acquire_view(near[1], wanted);
+            }
+        }
+        stats.wait_ms = ms_since(start);
+    }
+    stats.level = first.level;
+    stats.exact = first.exact;
+    stats.angle_rad = first.match.angle;
+    if (!first.view) {
+        if (stats_out != nullptr) *stats_out = stats;
+        return true;  // cold start: nothing resident yet, the background shows
+    }
+
+    auto g0 = upload(first, stats);
+    if (!g0) return Error{g0.error()};
+    const GpuView* v0 = g0.value();
+    const GpuView* v1 = nullptr;
+    if (second.view) {
+        auto g1 = upload(second, stats);
+        if (!g1) return Error{g1.error()};
+        v1 = g1.value();
+        // upload() may have reordered the list; v0 still points at a live view (three kept).
+    }
+
+    const Program& p = *program_;
+    p.use();
+    set_camera_uniforms(p, camera, frame.scene_radius_mm);
+    set_shading_uniforms(p, frame, 0);
+    stone_->bind(p, 1);
+    p.set("u_field_mm", static_cast<float>(model.field_mm));
+    p.set("u_image_scale", static_cast<float>(image_scale));
+    const bool dispersion = database_->params().dispersion;
+    p.set("u_dispersion", dispersion ? 1 : 0);
+    if (dispersion) {
+        const double nd = frame.material.index();
+        p.set("u_dn_channel", glm::vec3(frame.material.index(kChannelNm[0]) - nd,
+                                        frame.material.index(kChannelNm[1]) - nd,
+                                        frame.material.index(kChannelNm[2]) - nd));
+    }
+    auto bind_view = [&](const GpuView& v, const AcquiredView& a, int slot, int unit) {
+        const std::string s = std::to_string(slot);
+        const Texture* textures[4] = {&v.pixels, &v.rays_a, &v.rays_b, &v.rays_c};
+        const char* names[4] = {"u_pixels", "u_rays_a", "u_rays_b", "u_rays_c"};
+        for (int i = 0; i < 4; ++i) {
+            glActiveTexture(GL_TEXTURE0 + unit + i);
+            glBindTexture(GL_TEXTURE_2D, textures[i]->get());
+            p.set((names[i] + s).c_str(), unit + i);
+        }
+        const glm::dmat2 map = grid.image_map(a.match, asked, camera.right(), camera.up());
+        p.set(("u_image_map" + s).c_str(), glm::mat2(map));
+        // g · asked ≈ stored, so a stored-frame vector v is gᵀ v in the stone frame.
+        p.set(("u_to_stone" + s).c_str(), glm::mat3(glm::transpose(grid.group()[a.match.symmetry])));
+        p.set(("u_side" + s).c_str(), v.side);
+    };
+    bind_view(*v0, first, 0, 3);
+    p.set("u_views", v1 != nullptr ? 2 : 1);
+    p.set("u_blend", static_cast<float>(blend));
+    // Slot 1's samplers need textures of their type even when unused: two sampler types on
+    // one unit (their default, unit 0, holds the cube) fail the draw in GL ES.
+    bind_view(v1 != nullptr ? *v1 : *v0, v1 != nullptr ? second : first, 1, 7);
+
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_ALWAYS);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(empty_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+    stats.drawn = true;
+    stats.views = v1 != nullptr ? 2 : 1;
+    stats.blend = v1 != nullptr ? blend : 1.0;
+    if (stats_out != nullptr) *stats_out = stats;
+    return gl_check("table method");
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,74 @@
+#pragma once
+// The thesis' method on the GPU (DESIGN.md, "The method", stage 2): the view cache streams
+// ray-tables from a .gemdb, the stored views the camera needs are uploaded as textures, and
+// one fragment pass shades them (table.frag). Between stored directions it shows either the
+// nearest stored view or a blend of the two nearest (TableOptions::blend).
+
+#include <array>
+#include <memory>
+
+#include "gpu/frame_uniforms.hpp"
+#include "gpu/gl_handles.hpp"
+#include "gpu/program.hpp"
+#include "gpu/stone_textures.hpp"
+#include "tables/reader.hpp"
+#include "tables/view_cache.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+struct TableOptions {
+    bool blend = false;  // false: the nearest stored view; true: the two nearest, weighted
+    // Headless renders (tests, gemrender) wait until the views they want are decoded; the
+    // kiosk never does and shows what is resident.
+    bool wait_for_views = false;
+    ViewCacheOptions cache;
+};
+
+struct TableFrameStats {
+    double acquire_ms = 0.0;  // view cache lookups (never waits on the disk unless asked)
+    double upload_ms = 0.0;   // texture uploads of views not yet on the GPU
+    double wait_ms = 0.0;     // waiting for decodes (wait_for_views only)
+    std::uint32_t uploads = 0;
+    std::uint32_t level = 0;     // level shown by the nearest view
+    bool exact = false;          // the nearest stored view at the wanted level was shown
+    bool drawn = false;          // false when nothing was resident yet (cold start)
+    double angle_rad = 0.0;      // between the asked direction and the nearest view's image
+    std::uint32_t views = 0;     // stored views shaded: 1, or 2 in a blend
+    double blend = 1.0;          // weight of the nearest view
+};
+
+class TableMethod {
+  public:
+    static Result<TableMethod> make(std::shared_ptr<const Database> database,
+                                    const TableOptions& options = {});
+    TableMethod(TableMethod&&) noexcept;
+    TableMethod& operator=(TableMethod&&) noexcept;
+    ~TableMethod();
+
+    // Draws the stone layer. frame.stone is ignored: the database's stone is drawn. Errors: a
+    // camera the database cannot serve (perspective against orthographic tables, or another
+    // eye distance), GL errors.
+    Result<bool> draw(const StoneFrame& frame, TableFrameStats* stats = nullptr);
+
+    const Database& database() const { return *database_; }
+    ViewCache& cache() { return *cache_; }
+    // The level whose side best serves a stone `pixels_across` pixels wide on screen.
+    std::uint32_t level_for(double pixels_across) const;
+
+  private:
+    struct GpuView;
+    TableMethod() = default;
+    Result<const GpuView*> upload(const AcquiredView& acquired, TableFrameStats& stats);
+
+    std::shared_ptr<const Database> database_;
+    std::unique_ptr<ViewCache> cache_;
+    TableOptions options_;
+    std::unique_ptr<StoneTextures> stone_;
+    std::unique_ptr<Program> program_;
+    VertexArray empty_;
+    // The views on the GPU, most recently used first; a blend needs two, a turn a third.
+    std::vector<std::unique_ptr<GpuView>> gpu_views_;
+};
+
+}  // namespace gem::gpu
