@@ -1,6 +1,7 @@
-// gemrender: renders a stone with the exact CPU tracer to a PNG (and optionally a linear PFM).
-// Options override the scene file; with no arguments at all it renders the built-in default
-// scene to out/gemrender-default.png.
+// gemrender: renders a stone to a PNG, with the exact CPU tracer (--method reference, the
+// default; optionally also a linear PFM) or headless on the GPU through EGL (--method table,
+// trace or phong; gpu_render.hpp). Options override the scene file; with no arguments at all
+// it renders the built-in default scene to out/gemrender-default.png.
 #include <cstdio>
 #include <filesystem>
 #include <sstream>
@@ -9,6 +10,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "gpu_render.hpp"
 #include "render/image.hpp"
 #include "render/reference_render.hpp"
 #include "scene/scene.hpp"
@@ -35,6 +37,8 @@ struct Options {
     bool spectral = false;
     std::string out;
     std::string linear;
+    std::string method = "reference";
+    gem::GpuRenderOptions gpu;
 };
 
 int fail(const std::string& message) {
@@ -118,7 +122,7 @@ gem::Result<gem::Scene> apply(const CLI::App& app, const Options& o, gem::Scene 
 }  // namespace
 
 int main(int argc, char** argv) {
-    CLI::App app{"Renders a faceted gemstone with the exact CPU tracer."};
+    CLI::App app{"Renders a faceted gemstone: exact CPU tracer or GPU shading stage."};
     Options o;
     app.add_option("--scene", o.scene, "scene file (TOML, see config/scenes/README.md)")
         ->check(CLI::ExistingFile);
@@ -145,7 +149,18 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 1000));
     app.add_flag("--spectral", o.spectral, "trace wavelength samples (dispersion)");
     app.add_option("--out", o.out, "PNG to write (8-bit sRGB)");
-    app.add_option("--linear", o.linear, "also write linear float colour as PFM");
+    app.add_option("--linear", o.linear, "also write linear float colour as PFM (reference)");
+    app.add_option("--method", o.method, "reference (CPU, exact), table, trace or phong (GPU)")
+        ->check(CLI::IsMember({"reference", "table", "trace", "phong"}));
+    app.add_option("--db", o.gpu.database, "ray-table database for --method table")
+        ->check(CLI::ExistingFile);
+    app.add_flag("--blend", o.gpu.blend, "table: blend the two nearest stored views");
+    app.add_option("--ring", o.gpu.ring, "GPU: 'parametric' or a ring OBJ in the stone frame");
+    app.add_option("--metal", o.gpu.metal, "ring metal: yellow_gold, white_gold, platinum, silver");
+    app.add_option("--frames", o.gpu.frames, "GPU: a turntable of N frames, timed")
+        ->check(CLI::Range(1, 100000));
+    app.add_option("--turn", o.gpu.turn_deg, "turntable azimuth step per frame, degrees");
+    app.add_option("--frames-dir", o.gpu.frames_dir, "write every turntable frame here");
     CLI11_PARSE(app, argc, argv);
 
     const bool defaults_only = argc == 1;
@@ -167,6 +182,11 @@ int main(int argc, char** argv) {
     gem::Result<gem::Scene> final_scene = apply(app, o, std::move(scene));
     if (!final_scene) return fail(final_scene.error());
     const gem::Scene& s = final_scene.value();
+    if (o.method != "reference") {
+        o.gpu.method = o.method;
+        o.gpu.out = o.out;
+        return gem::render_gpu(s, o.gpu);
+    }
 
     gem::Result<gem::Stone> stone = gem::build_stone(s);
     if (!stone) return fail(stone.error());

@@ -32,22 +32,53 @@ constexpr EGLint kContextAttributes[] = {EGL_CONTEXT_MAJOR_VERSION, 3, EGL_CONTE
 std::string egl_error_name(EGLint code) {
     const char* name = "unknown EGL error";
     switch (code) {
-        case EGL_SUCCESS: name = "EGL_SUCCESS"; break;
-        case EGL_NOT_INITIALIZED: name = "EGL_NOT_INITIALIZED"; break;
-        case EGL_BAD_ACCESS: name = "EGL_BAD_ACCESS"; break;
-        case EGL_BAD_ALLOC: name = "EGL_BAD_ALLOC"; break;
-        case EGL_BAD_ATTRIBUTE: name = "EGL_BAD_ATTRIBUTE"; break;
-        case EGL_BAD_CONFIG: name = "EGL_BAD_CONFIG"; break;
-        case EGL_BAD_CONTEXT: name = "EGL_BAD_CONTEXT"; break;
-        case EGL_BAD_CURRENT_SURFACE: name = "EGL_BAD_CURRENT_SURFACE"; break;
-        case EGL_BAD_DISPLAY: name = "EGL_BAD_DISPLAY"; break;
-        case EGL_BAD_MATCH: name = "EGL_BAD_MATCH"; break;
-        case EGL_BAD_NATIVE_PIXMAP: name = "EGL_BAD_NATIVE_PIXMAP"; break;
-        case EGL_BAD_NATIVE_WINDOW: name = "EGL_BAD_NATIVE_WINDOW"; break;
-        case EGL_BAD_PARAMETER: name = "EGL_BAD_PARAMETER"; break;
-        case EGL_BAD_SURFACE: name = "EGL_BAD_SURFACE"; break;
-        case EGL_CONTEXT_LOST: name = "EGL_CONTEXT_LOST"; break;
-        default: break;
+        case EGL_SUCCESS:
+            name = "EGL_SUCCESS";
+            break;
+        case EGL_NOT_INITIALIZED:
+            name = "EGL_NOT_INITIALIZED";
+            break;
+        case EGL_BAD_ACCESS:
+            name = "EGL_BAD_ACCESS";
+            break;
+        case EGL_BAD_ALLOC:
+            name = "EGL_BAD_ALLOC";
+            break;
+        case EGL_BAD_ATTRIBUTE:
+            name = "EGL_BAD_ATTRIBUTE";
+            break;
+        case EGL_BAD_CONFIG:
+            name = "EGL_BAD_CONFIG";
+            break;
+        case EGL_BAD_CONTEXT:
+            name = "EGL_BAD_CONTEXT";
+            break;
+        case EGL_BAD_CURRENT_SURFACE:
+            name = "EGL_BAD_CURRENT_SURFACE";
+            break;
+        case EGL_BAD_DISPLAY:
+            name = "EGL_BAD_DISPLAY";
+            break;
+        case EGL_BAD_MATCH:
+            name = "EGL_BAD_MATCH";
+            break;
+        case EGL_BAD_NATIVE_PIXMAP:
+            name = "EGL_BAD_NATIVE_PIXMAP";
+            break;
+        case EGL_BAD_NATIVE_WINDOW:
+            name = "EGL_BAD_NATIVE_WINDOW";
+            break;
+        case EGL_BAD_PARAMETER:
+            name = "EGL_BAD_PARAMETER";
+            break;
+        case EGL_BAD_SURFACE:
+            name = "EGL_BAD_SURFACE";
+            break;
+        case EGL_CONTEXT_LOST:
+            name = "EGL_CONTEXT_LOST";
+            break;
+        default:
+            break;
     }
     char code_text[16];
     std::snprintf(code_text, sizeof code_text, "0x%04X", static_cast<unsigned>(code));
@@ -61,12 +92,12 @@ Result<EglContext> EglContext::headless() {
         auto get_display = reinterpret_cast<PFNEGLGETPLATFORMDISPLAYEXTPROC>(
             eglGetProcAddress("eglGetPlatformDisplayEXT"));
         if (get_display != nullptr) {
-            ctx.display_ =
-                get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
+            ctx.display_ = get_display(EGL_PLATFORM_SURFACELESS_MESA, EGL_DEFAULT_DISPLAY, nullptr);
         }
     }
     if (ctx.display_ == EGL_NO_DISPLAY) ctx.display_ = eglGetDisplay(EGL_DEFAULT_DISPLAY);
-    if (ctx.display_ == EGL_NO_DISPLAY) return Error{"EGL: no display (is Mesa's libEGL installed?)"};
+    if (ctx.display_ == EGL_NO_DISPLAY)
+        return Error{"EGL: no display (is Mesa's libEGL installed?)"};
     EGLint major = 0;
     EGLint minor = 0;
     if (!eglInitialize(ctx.display_, &major, &minor)) return egl_failure("eglInitialize");
@@ -106,10 +137,17 @@ Result<EglContext> EglContext::window(EGLenum platform, void* native_display, vo
     EGLint minor = 0;
     if (!eglInitialize(ctx.display_, &major, &minor)) return egl_failure("eglInitialize");
     if (!eglBindAPI(EGL_OPENGL_ES_API)) return egl_failure("eglBindAPI");
-    const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE, EGL_OPENGL_ES3_BIT, EGL_SURFACE_TYPE,
-                                        EGL_WINDOW_BIT,      EGL_RED_SIZE,        8,
-                                        EGL_GREEN_SIZE,      8,                   EGL_BLUE_SIZE,
-                                        8,                   EGL_NONE};
+    const EGLint config_attributes[] = {EGL_RENDERABLE_TYPE,
+                                        EGL_OPENGL_ES3_BIT,
+                                        EGL_SURFACE_TYPE,
+                                        EGL_WINDOW_BIT,
+                                        EGL_RED_SIZE,
+                                        8,
+                                        EGL_GREEN_SIZE,
+                                        8,
+                                        EGL_BLUE_SIZE,
+                                        8,
+                                        EGL_NONE};
     EGLConfig configs[64];
     EGLint count = 0;
     if (!eglChooseConfig(ctx.display_, config_attributes, configs, 64, &count) || count == 0) {
@@ -129,7 +167,8 @@ Result<EglContext> EglContext::window(EGLenum platform, void* native_display, vo
     if (ctx.context_ == EGL_NO_CONTEXT) return egl_failure("eglCreateContext (OpenGL ES 3.0)");
     auto create_surface = reinterpret_cast<PFNEGLCREATEPLATFORMWINDOWSURFACEEXTPROC>(
         eglGetProcAddress("eglCreatePlatformWindowSurfaceEXT"));
-    if (create_surface == nullptr) return Error{"EGL: eglCreatePlatformWindowSurfaceEXT is missing"};
+    if (create_surface == nullptr)
+        return Error{"EGL: eglCreatePlatformWindowSurfaceEXT is missing"};
     ctx.surface_ = create_surface(ctx.display_, chosen, native_window, nullptr);
     if (ctx.surface_ == EGL_NO_SURFACE) return egl_failure("eglCreatePlatformWindowSurfaceEXT");
     if (!eglMakeCurrent(ctx.display_, ctx.surface_, ctx.surface_, ctx.context_)) {
@@ -138,7 +177,9 @@ Result<EglContext> EglContext::window(EGLenum platform, void* native_display, vo
     return ctx;
 }
 
-EglContext::EglContext(EglContext&& other) noexcept { *this = std::move(other); }
+EglContext::EglContext(EglContext&& other) noexcept {
+    *this = std::move(other);
+}
 
 EglContext& EglContext::operator=(EglContext&& other) noexcept {
     if (this != &other) {
@@ -151,7 +192,9 @@ EglContext& EglContext::operator=(EglContext&& other) noexcept {
     return *this;
 }
 
-EglContext::~EglContext() { release(); }
+EglContext::~EglContext() {
+    release();
+}
 
 void EglContext::release() {
     if (display_ == EGL_NO_DISPLAY) return;

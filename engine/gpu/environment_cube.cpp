@@ -1,5 +1,6 @@
 #include "gpu/environment_cube.hpp"
 
+#include <cstring>
 #include <vector>
 
 #include "gpu/gl_check.hpp"
@@ -12,12 +13,24 @@ glm::dvec3 cube_face_direction(int face, double s, double t) {
     const double tc = 2.0 * t - 1.0;
     glm::dvec3 d(0.0);
     switch (face) {
-        case 0: d = {1.0, -tc, -sc}; break;
-        case 1: d = {-1.0, -tc, sc}; break;
-        case 2: d = {sc, 1.0, tc}; break;
-        case 3: d = {sc, -1.0, -tc}; break;
-        case 4: d = {sc, -tc, 1.0}; break;
-        default: d = {-sc, -tc, -1.0}; break;
+        case 0:
+            d = {1.0, -tc, -sc};
+            break;
+        case 1:
+            d = {-1.0, -tc, sc};
+            break;
+        case 2:
+            d = {sc, 1.0, tc};
+            break;
+        case 3:
+            d = {sc, -1.0, -tc};
+            break;
+        case 4:
+            d = {sc, -tc, 1.0};
+            break;
+        default:
+            d = {-sc, -tc, -1.0};
+            break;
     }
     return glm::normalize(d);
 }
@@ -31,6 +44,19 @@ CubeFaceBasis cube_face_basis(int face) {
     return {centre, glm::normalize(right), glm::normalize(up)};
 }
 
+bool renders_half_float() {
+    GLint count = 0;
+    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
+    for (GLint i = 0; i < count; ++i) {
+        const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
+        if (name != nullptr && (std::strcmp(name, "GL_EXT_color_buffer_half_float") == 0 ||
+                                std::strcmp(name, "GL_EXT_color_buffer_float") == 0)) {
+            return true;
+        }
+    }
+    return false;
+}
+
 Result<EnvironmentCube> EnvironmentCube::allocate(int face_size) {
     if (face_size < 1 || face_size > 4096) {
         return Error{"environment cube: face size " + std::to_string(face_size) +
@@ -40,9 +66,15 @@ Result<EnvironmentCube> EnvironmentCube::allocate(int face_size) {
     cube.face_size_ = face_size;
     cube.texture_ = make_texture();
     glBindTexture(GL_TEXTURE_CUBE_MAP, cube.texture_.get());
+    const bool half_float = renders_half_float();
     for (int face = 0; face < 6; ++face) {
-        glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA16F, face_size, face_size,
-                     0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+        if (half_float) {
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_RGBA16F, face_size, face_size,
+                         0, GL_RGBA, GL_HALF_FLOAT, nullptr);
+        } else {
+            glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_SRGB8_ALPHA8, face_size,
+                         face_size, 0, GL_RGBA, GL_UNSIGNED_BYTE, nullptr);
+        }
     }
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);

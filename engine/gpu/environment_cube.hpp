@@ -17,7 +17,9 @@ namespace gem::gpu {
 
 class EnvironmentCube {
   public:
-    // An empty cube map of `face_size`² per face, to be rendered into.
+    // An empty cube map of `face_size`² per face, to be rendered into: RGBA16F where the GL
+    // can render to half floats (EXT_color_buffer_half_float / _float), else SRGB8_ALPHA8,
+    // which ES 3.0 can always render to but which clips radiance above 1.
     static Result<EnvironmentCube> allocate(int face_size);
     // Every texel set to `environment`'s radiance toward the texel's centre.
     static Result<EnvironmentCube> from_environment(const Environment& environment, int face_size);
@@ -30,6 +32,9 @@ class EnvironmentCube {
     Texture texture_;
     int face_size_ = 0;
 };
+
+// Whether this GL can render into RGBA16F textures (an extension in ES 3.0).
+bool renders_half_float();
 
 // The stone-frame direction through texel coordinates (s, t) in [0, 1]² of cube face `face`
 // (0..5 = +x, -x, +y, -y, +z, -z); t = 0 is the face's first row in memory.

@@ -59,7 +59,8 @@ void set_shading_uniforms(const Program& program, const StoneFrame& frame, int u
     glm::vec4 position[kMaxLights] = {};
     glm::vec3 colour[kMaxLights] = {};
     for (int i = 0; i < lights; ++i) {
-        position[i] = glm::vec4(glm::vec3(s.lights[i].position), s.lights[i].directional ? 0.0f : 1.0f);
+        position[i] =
+            glm::vec4(glm::vec3(s.lights[i].position), s.lights[i].directional ? 0.0f : 1.0f);
         colour[i] = glm::vec3(s.lights[i].colour);
     }
     program.set("u_light_count", lights);

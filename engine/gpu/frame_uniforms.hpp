@@ -16,7 +16,7 @@ struct StoneFrame {
     Camera camera;
     ShadingSettings shading;
     const EnvironmentCube* environment = nullptr;
-    double cube_half_mm = 0.0;  // the virtual cube's half side; 0 puts it at infinity
+    double cube_half_mm = 0.0;      // the virtual cube's half side; 0 puts it at infinity
     double scene_radius_mm = 10.0;  // holds everything drawn (depth range, view_projection)
 };
 

@@ -36,13 +36,27 @@ class GlHandle {
 };
 
 namespace detail {
-inline void delete_texture(GLuint n) { glDeleteTextures(1, &n); }
-inline void delete_buffer(GLuint n) { glDeleteBuffers(1, &n); }
-inline void delete_framebuffer(GLuint n) { glDeleteFramebuffers(1, &n); }
-inline void delete_renderbuffer(GLuint n) { glDeleteRenderbuffers(1, &n); }
-inline void delete_vertex_array(GLuint n) { glDeleteVertexArrays(1, &n); }
-inline void delete_program(GLuint n) { glDeleteProgram(n); }
-inline void delete_query(GLuint n) { glDeleteQueries(1, &n); }
+inline void delete_texture(GLuint n) {
+    glDeleteTextures(1, &n);
+}
+inline void delete_buffer(GLuint n) {
+    glDeleteBuffers(1, &n);
+}
+inline void delete_framebuffer(GLuint n) {
+    glDeleteFramebuffers(1, &n);
+}
+inline void delete_renderbuffer(GLuint n) {
+    glDeleteRenderbuffers(1, &n);
+}
+inline void delete_vertex_array(GLuint n) {
+    glDeleteVertexArrays(1, &n);
+}
+inline void delete_program(GLuint n) {
+    glDeleteProgram(n);
+}
+inline void delete_query(GLuint n) {
+    glDeleteQueries(1, &n);
+}
 }  // namespace detail
 
 using Texture = GlHandle<detail::delete_texture>;

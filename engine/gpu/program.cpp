@@ -25,15 +25,17 @@ std::string info_log(GLuint object, bool program) {
 }
 
 // Compiles one stage; the shader object is returned on success and deleted on failure.
-Result<GLuint> compile(const ProgramSpec& spec, GLenum stage, const std::vector<std::string>& names) {
+Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
+                       const std::vector<std::string>& names) {
     const char* stage_name = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
     const std::string where =
         "program '" + spec.name + "', " + stage_name + " shader " + join(names);
     // Every stage sees the same header; "#line 1 N" restarts line numbers per chunk, so the
     // driver's "0:12" reads as chunk 0, line 12 and the log below names the chunks in order.
-    std::string text = "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-                       "precision highp sampler2D;\nprecision highp usampler2D;\n"
-                       "precision highp isampler2D;\nprecision highp samplerCube;\n";
+    std::string text =
+        "#version 300 es\nprecision highp float;\nprecision highp int;\n"
+        "precision highp sampler2D;\nprecision highp usampler2D;\n"
+        "precision highp isampler2D;\nprecision highp samplerCube;\n";
     for (const std::string& d : spec.defines) text += "#define " + d + "\n";
     for (std::size_t i = 0; i < names.size(); ++i) {
         auto chunk = shader_text(names[i]);

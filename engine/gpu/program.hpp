@@ -19,10 +19,10 @@
 namespace gem::gpu {
 
 struct ProgramSpec {
-    std::string name;                    // for messages: "table"
-    std::vector<std::string> vertex;     // chunk names, main file last
-    std::vector<std::string> fragment;   // chunk names, main file last
-    std::vector<std::string> defines;    // "NON_CONVEX", "MAX_LIGHTS 4"
+    std::string name;                   // for messages: "table"
+    std::vector<std::string> vertex;    // chunk names, main file last
+    std::vector<std::string> fragment;  // chunk names, main file last
+    std::vector<std::string> defines;   // "NON_CONVEX", "MAX_LIGHTS 4"
 };
 
 class Program {

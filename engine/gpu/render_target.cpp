@@ -30,8 +30,7 @@ Result<RenderTarget> RenderTarget::make(int width, int height) {
     t.framebuffer_ = make_framebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour_.get(), 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                              t.depth_.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.get());
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         return Error{"render target: framebuffer incomplete (status " + std::to_string(status) +
@@ -56,11 +55,13 @@ Image RenderTarget::read() const {
     float decode[256];
     for (int i = 0; i < 256; ++i) {
         const double c = i / 255.0;
-        decode[i] = static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
+        decode[i] =
+            static_cast<float>(c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4));
     }
     Image image(width_, height_);
     for (int y = 0; y < height_; ++y) {
-        const std::uint8_t* row = bytes.data() + static_cast<std::size_t>(height_ - 1 - y) * width_ * 4;
+        const std::uint8_t* row =
+            bytes.data() + static_cast<std::size_t>(height_ - 1 - y) * width_ * 4;
         for (int x = 0; x < width_; ++x) {
             const std::uint8_t* p = row + 4 * x;
             image.at(x, y) = {decode[p[0]], decode[p[1]], decode[p[2]], p[3] / 255.0f};

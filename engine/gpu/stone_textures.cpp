@@ -37,8 +37,9 @@ Result<StoneTextures> StoneTextures::upload(const Stone& stone) {
     std::vector<float> planes;
     planes.reserve(stone.facets.size() * 4);
     for (const Facet& f : stone.facets) {
-        planes.insert(planes.end(), {static_cast<float>(f.plane.n.x), static_cast<float>(f.plane.n.y),
-                                     static_cast<float>(f.plane.n.z), static_cast<float>(f.plane.d)});
+        planes.insert(planes.end(),
+                      {static_cast<float>(f.plane.n.x), static_cast<float>(f.plane.n.y),
+                       static_cast<float>(f.plane.n.z), static_cast<float>(f.plane.d)});
     }
     auto p = upload_texel_array(planes.data(), stone.facets.size(), "stone facet planes");
     if (!p) return Error{p.error()};
@@ -57,9 +58,9 @@ Result<StoneTextures> StoneTextures::upload(const Stone& stone) {
         for (const MeshTriangle& tri : stone.triangles) {
             for (int k = 0; k < 3; ++k) {
                 const glm::dvec3& v = stone.vertices[tri.v[k]];
-                corners.insert(corners.end(), {static_cast<float>(v.x), static_cast<float>(v.y),
-                                               static_cast<float>(v.z),
-                                               static_cast<float>(tri.facet)});
+                corners.insert(corners.end(),
+                               {static_cast<float>(v.x), static_cast<float>(v.y),
+                                static_cast<float>(v.z), static_cast<float>(tri.facet)});
             }
         }
         auto t = upload_texel_array(corners.data(), stone.triangles.size() * 3, "stone triangles");

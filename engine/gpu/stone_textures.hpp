@@ -1,8 +1,8 @@
 #pragma once
 // The stone's geometry on the GPU, for the obstruction test (table method) and for tracing in
 // the fragment shader (trace method): facet planes (n, d) one RGBA32F texel each, and for
-// non-convex stones the triangles, three texels each (a corner's xyz, w = the triangle's facet). Textures are kTextureWidth texels wide
-// (shading.glsl's kTexWidth), as many rows as needed.
+// non-convex stones the triangles, three texels each (a corner's xyz, w = the triangle's facet).
+// Textures are kTextureWidth texels wide (shading.glsl's kTexWidth), as many rows as needed.
 
 #include "geometry/stone.hpp"
 #include "gpu/gl_handles.hpp"

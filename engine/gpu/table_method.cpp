@@ -138,11 +138,13 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     const CameraModel& model = database_->camera();
     const bool perspective = model.kind == CameraModel::Kind::perspective;
     if (perspective == camera.orthographic() ||
-        (perspective && std::abs(camera.distance() - model.distance_mm) > 1e-6 * model.distance_mm)) {
+        (perspective &&
+         std::abs(camera.distance() - model.distance_mm) > 1e-6 * model.distance_mm)) {
         return Error{"table method: the camera must be " +
-                     std::string(perspective ? "perspective at " + std::to_string(model.distance_mm) +
-                                                   " mm, as the database was built"
-                                             : "orthographic, as the database was built")};
+                     std::string(perspective
+                                     ? "perspective at " + std::to_string(model.distance_mm) +
+                                           " mm, as the database was built"
+                                     : "orthographic, as the database was built")};
     }
     const double image_scale = perspective ? camera.distance() : 1.0;
     const double pixels_across = model.field_mm / (camera.pixel_size() * image_scale);
@@ -169,8 +171,8 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         }
     }
     stats.acquire_ms = ms_since(start);
-    if (options_.wait_for_views && (!first.exact || (second.view && !second.exact) ||
-                                    (blend < 1.0 && !second.view))) {
+    if (options_.wait_for_views &&
+        (!first.exact || (second.view && !second.exact) || (blend < 1.0 && !second.view))) {
         start = Clock::now();
         cache_->wait_idle(std::chrono::seconds(60));
         first = cache_->acquire(asked, wanted);
@@ -229,7 +231,8 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         const glm::dmat2 map = grid.image_map(a.match, asked, camera.right(), camera.up());
         p.set(("u_image_map" + s).c_str(), glm::mat2(map));
         // g · asked ≈ stored, so a stored-frame vector v is gᵀ v in the stone frame.
-        p.set(("u_to_stone" + s).c_str(), glm::mat3(glm::transpose(grid.group()[a.match.symmetry])));
+        p.set(("u_to_stone" + s).c_str(),
+              glm::mat3(glm::transpose(grid.group()[a.match.symmetry])));
         p.set(("u_side" + s).c_str(), v.side);
     };
     bind_view(*v0, first, 0, 3);

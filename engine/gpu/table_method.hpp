@@ -30,12 +30,12 @@ struct TableFrameStats {
     double upload_ms = 0.0;   // texture uploads of views not yet on the GPU
     double wait_ms = 0.0;     // waiting for decodes (wait_for_views only)
     std::uint32_t uploads = 0;
-    std::uint32_t level = 0;     // level shown by the nearest view
-    bool exact = false;          // the nearest stored view at the wanted level was shown
-    bool drawn = false;          // false when nothing was resident yet (cold start)
-    double angle_rad = 0.0;      // between the asked direction and the nearest view's image
-    std::uint32_t views = 0;     // stored views shaded: 1, or 2 in a blend
-    double blend = 1.0;          // weight of the nearest view
+    std::uint32_t level = 0;  // level shown by the nearest view
+    bool exact = false;       // the nearest stored view at the wanted level was shown
+    bool drawn = false;       // false when nothing was resident yet (cold start)
+    double angle_rad = 0.0;   // between the asked direction and the nearest view's image
+    std::uint32_t views = 0;  // stored views shaded: 1, or 2 in a blend
+    double blend = 1.0;       // weight of the nearest view
 };
 
 class TableMethod {

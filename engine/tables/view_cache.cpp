@@ -292,9 +292,8 @@ void ViewCache::worker() {
         const auto level = static_cast<std::uint32_t>(k % levels_);
         const auto start = std::chrono::steady_clock::now();
         auto too_large = [&](std::uint64_t bytes) {
-            return "view " + std::to_string(view) + " level " + std::to_string(level) +
-                   " needs " + std::to_string(bytes) +
-                   " bytes, more than the cache's memory bound of " +
+            return "view " + std::to_string(view) + " level " + std::to_string(level) + " needs " +
+                   std::to_string(bytes) + " bytes, more than the cache's memory bound of " +
                    std::to_string(options_.memory_bytes);
         };
         std::optional<std::string> failure;

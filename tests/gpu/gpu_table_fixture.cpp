@@ -32,18 +32,18 @@ Result<const TableFixture*> round_brilliant_database(double spacing_deg, bool di
     const CameraModel camera = tables::table_camera(fixture->stone);
     const tables::ViewTracer tracer(fixture->stone, camera, grid.value(), params);
     std::filesystem::create_directories(GEM_ARTIFACT_DIR);
-    fixture->path = std::filesystem::path(GEM_ARTIFACT_DIR) /
-                    ("gpu_round_" + std::to_string(int(spacing_deg)) + (dispersion ? "_dn" : "") +
-                     ".gemdb");
+    fixture->path =
+        std::filesystem::path(GEM_ARTIFACT_DIR) /
+        ("gpu_round_" + std::to_string(int(spacing_deg)) + (dispersion ? "_dn" : "") + ".gemdb");
     WriteOptions options;
     options.threads = 2;
     auto written = write_database(
         fixture->path, fixture->stone, camera, params, grid.value(),
         [&](std::uint32_t v, std::uint32_t l) { return tracer.trace_view(v, l); },
-        dispersion ? TraceDerivativesFn([&](std::uint32_t v, std::uint32_t l,
-                                            const std::vector<RayList>& lists) {
-            return tracer.derivatives(v, l, lists);
-        })
+        dispersion ? TraceDerivativesFn(
+                         [&](std::uint32_t v, std::uint32_t l, const std::vector<RayList>& lists) {
+                             return tracer.derivatives(v, l, lists);
+                         })
                    : TraceDerivativesFn{},
         options);
     if (!written) return Error{written.error()};
@@ -68,8 +68,8 @@ Result<Camera> table_aligned_camera(const Database& database, const glm::dvec3& 
     return Camera::make(s, radius, image, image);
 }
 
-Image cpu_exact_image(const Stone& stone, const gpu::StoneFrame& frame, const Environment& environment,
-                      const TraceSettings& trace) {
+Image cpu_exact_image(const Stone& stone, const gpu::StoneFrame& frame,
+                      const Environment& environment, const TraceSettings& trace) {
     const Camera& camera = frame.camera;
     const Tracer tracer(stone);
     const Shader shader(stone, frame.material, environment, frame.shading);

@@ -35,7 +35,7 @@ Result<Camera> table_aligned_camera(const Database& database, const glm::dvec3& 
                                     double roll_deg, int side, int image);
 
 // The exact CPU image of `frame` (1 sample at each pixel centre), background = environment.
-Image cpu_exact_image(const Stone& stone, const gpu::StoneFrame& frame, const Environment& environment,
-                      const TraceSettings& trace);
+Image cpu_exact_image(const Stone& stone, const gpu::StoneFrame& frame,
+                      const Environment& environment, const TraceSettings& trace);
 
 }  // namespace gem::gpu_test

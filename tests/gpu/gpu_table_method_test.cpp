@@ -11,6 +11,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/table_method.hpp"
+#include "gpu/trace_method.hpp"
 #include "gpu_table_fixture.hpp"
 #include "gpu_test_support.hpp"
 #include "view_trace.hpp"
@@ -95,8 +96,8 @@ TEST_F(GpuTableMethod, StoredViewMatchesTheExactTrace) {
         const double y = grid.direction(v).y;
         if (y > 0.4 && y < 0.8) chosen = v;
     }
-    auto camera = gpu_test::table_aligned_camera(*fx_->database, grid.direction(chosen), 0.0,
-                                                 128, kImage);
+    auto camera =
+        gpu_test::table_aligned_camera(*fx_->database, grid.direction(chosen), 0.0, 128, kImage);
     ASSERT_TRUE(camera.ok()) << camera.error();
     const Rendered r = render_both(*fx_, camera.value(), two_lights(), false);
     save(r, "table_stored_view");
@@ -130,8 +131,8 @@ TEST_F(GpuTableMethod, FoldedViewWithRollMatchesTheExactTrace) {
 
 TEST_F(GpuTableMethod, ThesisWeightsWithColourAndTransparency) {
     const ViewGrid& grid = fx_->database->grid();
-    auto camera = gpu_test::table_aligned_camera(*fx_->database, grid.direction(1), 0.0, 128,
-                                                 kImage);
+    auto camera =
+        gpu_test::table_aligned_camera(*fx_->database, grid.direction(1), 0.0, 128, kImage);
     ASSERT_TRUE(camera.ok()) << camera.error();
     ShadingSettings s = two_lights();
     s.model = ShadingModel::thesis;
@@ -159,7 +160,8 @@ TEST_F(GpuTableMethod, BetweenStoredViewsNearestAndBlendAreBounded) {
     std::array<ViewMatch, 2> near{};
     const glm::dvec3 a = grid.direction(static_cast<std::uint32_t>(grid.size() / 2));
     ASSERT_EQ(grid.nearest_k(a + glm::dvec3(0.0, 0.0, 1e-3), near), 2u);
-    const glm::dvec3 b = glm::transpose(grid.group()[near[1].symmetry]) * grid.direction(near[1].view);
+    const glm::dvec3 b =
+        glm::transpose(grid.group()[near[1].symmetry]) * grid.direction(near[1].view);
     const glm::dvec3 mid = glm::normalize(a + b);
     auto camera = gpu_test::table_aligned_camera(*fx_->database, mid, 0.0, 128, kImage);
     ASSERT_TRUE(camera.ok()) << camera.error();
@@ -181,6 +183,37 @@ TEST_F(GpuTableMethod, BetweenStoredViewsNearestAndBlendAreBounded) {
     // silhouette and the large facets stay in place, and blending must not be worse.
     EXPECT_GT(p_nearest, 10.0);
     EXPECT_GT(p_blend, p_nearest - 0.5);
+}
+
+// Cross-method agreement: at a stored view, the table and per-pixel tracing on the GPU (same
+// depth, physical weights, same cube) differ only by the table's quantisation.
+TEST_F(GpuTableMethod, AgreesWithTheTraceMethodAtAStoredView) {
+    const ViewGrid& grid = fx_->database->grid();
+    auto camera =
+        gpu_test::table_aligned_camera(*fx_->database, grid.direction(2), 0.0, 128, kImage);
+    ASSERT_TRUE(camera.ok()) << camera.error();
+    const Rendered table = render_both(*fx_, camera.value(), two_lights(), false);
+    auto target = gpu::RenderTarget::make(kImage, kImage);
+    ASSERT_TRUE(target.ok()) << target.error();
+    auto cube = gpu::EnvironmentCube::from_environment(Environment::studio(), kCubeFace);
+    ASSERT_TRUE(cube.ok()) << cube.error();
+    auto background = gpu::BackgroundPass::make();
+    ASSERT_TRUE(background.ok()) << background.error();
+    auto trace = gpu::TraceMethod::make(fx_->stone);
+    ASSERT_TRUE(trace.ok()) << trace.error();
+    gpu::StoneFrame frame{
+        &fx_->stone, fx_->stone.material, camera.value(), two_lights(), &cube.value(), 0.0, 10.0};
+    target.value().bind();
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    ASSERT_TRUE(background.value().draw(camera.value(), cube.value(), std::nullopt).ok());
+    auto drawn = trace.value().draw(frame, tables::table_trace_settings(fx_->database->params()));
+    ASSERT_TRUE(drawn.ok()) << drawn.error();
+    const Image traced = target.value().read();
+    gpu_test::write_artifact(traced, "table_vs_trace_trace");
+    gpu_test::write_artifact(gpu_test::difference_image(table.gpu, traced), "table_vs_trace_diff");
+    const double psnr = gpu_test::psnr_srgb8(table.gpu, traced);
+    std::printf("table vs trace (GPU) at a stored view: %.1f dB\n", psnr);
+    EXPECT_GT(psnr, 40.0);
 }
 
 TEST_F(GpuTableMethod, OrthographicTablesRefuseAPerspectiveCamera) {

@@ -1,0 +1,140 @@
+#include "gpu/frame_renderer.hpp"
+
+#include <chrono>
+
+#include "gpu/gl_check.hpp"
+#include "gpu/phong_method.hpp"
+#include "gpu/ring_mesh.hpp"
+#include "gpu/ring_renderer.hpp"
+#include "gpu/trace_method.hpp"
+
+namespace gem::gpu {
+
+const char* to_string(Method method) {
+    switch (method) {
+        case Method::table:
+            return "table";
+        case Method::trace:
+            return "trace";
+        case Method::phong:
+            return "phong";
+    }
+    return "?";
+}
+
+FrameRenderer::FrameRenderer(FrameRenderer&&) noexcept = default;
+FrameRenderer& FrameRenderer::operator=(FrameRenderer&&) noexcept = default;
+FrameRenderer::~FrameRenderer() = default;
+
+const Stone& FrameRenderer::stone() const {
+    return setup_.method == Method::table ? setup_.database->stone() : setup_.stone;
+}
+
+Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
+    if (setup.environment == nullptr) return Error{"frame renderer: no environment"};
+    if (setup.method == Method::table && setup.database == nullptr) {
+        return Error{"frame renderer: the table method needs a database"};
+    }
+    FrameRenderer r;
+    r.setup_ = std::move(setup);
+    const FrameSetup& s = r.setup_;
+    auto background = BackgroundPass::make();
+    if (!background) return Error{background.error()};
+    r.background_ = std::make_unique<BackgroundPass>(std::move(background).value());
+    auto cube = EnvironmentCube::from_environment(*s.environment, s.cube_face);
+    if (!cube) return Error{cube.error()};
+    r.environment_cube_ = std::make_unique<EnvironmentCube>(std::move(cube).value());
+
+    switch (s.method) {
+        case Method::table: {
+            auto m = TableMethod::make(s.database, s.table);
+            if (!m) return Error{m.error()};
+            r.table_ = std::make_unique<TableMethod>(std::move(m).value());
+            break;
+        }
+        case Method::trace: {
+            auto m = TraceMethod::make(s.stone);
+            if (!m) return Error{m.error()};
+            r.trace_ = std::make_unique<TraceMethod>(std::move(m).value());
+            break;
+        }
+        case Method::phong: {
+            auto m = PhongMethod::make(s.stone);
+            if (!m) return Error{m.error()};
+            r.phong_ = std::make_unique<PhongMethod>(std::move(m).value());
+            break;
+        }
+    }
+    r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
+    r.scene_radius_mm_ = r.stone_radius_mm_ * 1.01;
+    if (s.ring != nullptr) {
+        auto ring = RingRenderer::make(*s.ring);
+        if (!ring) return Error{ring.error()};
+        r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
+        r.scene_radius_mm_ = std::max(r.scene_radius_mm_, s.ring->radius_mm() * 1.01);
+        // The ring sits about as far from the stone as its own radius: that is where the
+        // virtual cube's faces stand, so rays leaving off-centre see it with parallax.
+        r.cube_half_mm_ = s.ring->radius_mm();
+        auto ring_cube = EnvironmentCube::allocate(s.cube_face);
+        if (!ring_cube) return Error{ring_cube.error()};
+        r.ring_cube_ = std::make_unique<EnvironmentCube>(std::move(ring_cube).value());
+        auto updated = r.update_ring_cube();
+        if (!updated) return Error{updated.error()};
+    }
+    return r;
+}
+
+Result<bool> FrameRenderer::update_ring_cube() {
+    if (!ring_) return true;
+    GLint framebuffer = 0;
+    GLint viewport[4] = {};
+    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
+    glGetIntegerv(GL_VIEWPORT, viewport);
+    auto done = ring_->render_environment_cube(*environment_cube_, *ring_cube_, setup_.shading);
+    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
+    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
+    return done;
+}
+
+Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
+    setup_.shading.lights = lights;
+    return update_ring_cube();
+}
+
+Result<FrameStats> FrameRenderer::render(const Camera& camera, bool finish) {
+    using Clock = std::chrono::steady_clock;
+    const auto start = Clock::now();
+    FrameStats stats;
+    glDepthMask(GL_TRUE);
+    glClearDepthf(1.0f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    auto ok = background_->draw(camera, *environment_cube_, setup_.background_colour);
+    if (!ok) return Error{ok.error()};
+
+    const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
+    StoneFrame frame{&stone(), setup_.material, camera,          setup_.shading,
+                     &seen,    cube_half_mm_,   scene_radius_mm_};
+    switch (setup_.method) {
+        case Method::table:
+            ok = table_->draw(frame, &stats.table);
+            break;
+        case Method::trace:
+            ok = trace_->draw(frame, setup_.trace);
+            break;
+        case Method::phong:
+            ok = phong_->draw(frame);
+            break;
+    }
+    if (!ok) return Error{ok.error()};
+    if (ring_) {
+        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
+        if (!ok) return Error{ok.error()};
+    }
+    if (finish) glFinish();
+    stats.cpu_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    auto clean = gl_check(std::string("frame (") + to_string(setup_.method) + ")");
+    if (!clean) return Error{clean.error()};
+    return stats;
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,83 @@
+#pragma once
+// One frame of the shading stage, whatever the method: background, stone layer (table,
+// trace or phong), ring, composited with alpha and depth into the bound framebuffer
+// (DESIGN.md, "Data flow"). gemrender and the kiosk both draw through it. With a ring, the
+// virtual cube shows the ring around the stone: its six faces are rendered from the stone's
+// centre when the scene around the stone changes (make() and set_lights()), not every frame.
+
+#include <memory>
+#include <optional>
+
+#include "gpu/background_pass.hpp"
+#include "gpu/environment_cube.hpp"
+#include "gpu/frame_uniforms.hpp"
+#include "gpu/table_method.hpp"
+#include "render/environment.hpp"
+#include "trace/tracer.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+class TraceMethod;
+class PhongMethod;
+class RingRenderer;
+struct RingMesh;
+
+enum class Method { table, trace, phong };
+const char* to_string(Method method);
+
+struct FrameSetup {
+    Method method = Method::table;
+    std::shared_ptr<const Database> database;  // table: the stone comes from it
+    Stone stone;                               // trace, phong (ignored by table)
+    Material material;                         // shading-time material (colour, absorption)
+    ShadingSettings shading;
+    TraceSettings trace;  // trace: depth, weights, threshold
+    TableOptions table;
+    const Environment* environment = nullptr;    // what surrounds everything
+    int cube_face = 512;                         // virtual-cube face size, texels
+    std::optional<glm::vec3> background_colour;  // else the environment shows behind
+    const RingMesh* ring = nullptr;              // optional jewellery around the stone
+};
+
+struct FrameStats {
+    double cpu_ms = 0.0;  // from the start of the frame to glFinish returning
+    TableFrameStats table;
+};
+
+class FrameRenderer {
+  public:
+    static Result<FrameRenderer> make(FrameSetup setup);
+    FrameRenderer(FrameRenderer&&) noexcept;
+    FrameRenderer& operator=(FrameRenderer&&) noexcept;
+    ~FrameRenderer();
+
+    // Draws into the bound framebuffer (viewport set); `finish` waits for the GPU (timing).
+    Result<FrameStats> render(const Camera& camera, bool finish);
+    // New lights re-render the ring's cube faces (its metal reflects them).
+    Result<bool> set_lights(const std::vector<Light>& lights);
+
+    const Stone& stone() const;
+    // Radius about the stone's centre that holds the stone and the ring.
+    double scene_radius_mm() const { return scene_radius_mm_; }
+    double stone_radius_mm() const { return stone_radius_mm_; }
+    TableMethod* table() { return table_.get(); }
+
+  private:
+    FrameRenderer() = default;
+    Result<bool> update_ring_cube();
+
+    FrameSetup setup_;
+    std::unique_ptr<BackgroundPass> background_;
+    std::unique_ptr<EnvironmentCube> environment_cube_;  // the environment alone
+    std::unique_ptr<EnvironmentCube> ring_cube_;         // environment + ring, from the centre
+    std::unique_ptr<TableMethod> table_;
+    std::unique_ptr<TraceMethod> trace_;
+    std::unique_ptr<PhongMethod> phong_;
+    std::unique_ptr<RingRenderer> ring_;
+    double scene_radius_mm_ = 0.0;
+    double stone_radius_mm_ = 0.0;
+    double cube_half_mm_ = 0.0;
+};
+
+}  // namespace gem::gpu

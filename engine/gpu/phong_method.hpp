@@ -1,0 +1,35 @@
+#pragma once
+// The `phong` method (DESIGN.md, "Methods side by side"; thesis fig. 8.17): the stone's
+// facets rasterised with flat normals and Phong lighting, alpha-blended over the background,
+// back facets first and then front facets, no refraction. The baseline the table and trace
+// methods are compared against.
+
+#include "geometry/stone.hpp"
+#include "gpu/frame_uniforms.hpp"
+#include "gpu/gl_handles.hpp"
+#include "gpu/program.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+class PhongMethod {
+  public:
+    static Result<PhongMethod> make(const Stone& stone);
+
+    // Draws over the bound framebuffer with GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA blending:
+    // Phong with the lights (k_s, h from frame.shading), ambient from frame.environment along
+    // the facet normal, stone colour frame.material.body_colour, opacity 1 − frame.shading.alpha
+    // (the thesis' transparency; alpha = 1 leaves only the depth). Writes the depth of the
+    // nearest front facet (view_projection(frame.camera, frame.scene_radius_mm)), whatever the
+    // depth buffer held there before, so a ring drawn next composites against the stone.
+    Result<bool> draw(const StoneFrame& frame) const;
+
+  private:
+    explicit PhongMethod(Program program);
+    Program program_;
+    VertexArray vertex_array_;
+    Buffer vertices_;
+    GLsizei vertex_count_ = 0;
+};
+
+}  // namespace gem::gpu

@@ -1,0 +1,205 @@
+#include "gpu/ring_renderer.hpp"
+
+#include <algorithm>
+#include <string>
+
+#include "gpu/frame_uniforms.hpp"
+#include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
+#include "render/lights.hpp"
+
+namespace gem::gpu {
+namespace {
+
+Buffer upload(GLenum target, const void* data, std::size_t bytes) {
+    Buffer buffer = make_buffer();
+    glBindBuffer(target, buffer.get());
+    glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
+    return buffer;
+}
+
+// Restores the framebuffer and viewport a pass found bound, however the pass ends.
+class FramebufferScope {
+  public:
+    FramebufferScope() {
+        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
+        glGetIntegerv(GL_VIEWPORT, viewport_);
+    }
+    ~FramebufferScope() {
+        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
+        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
+    }
+    FramebufferScope(const FramebufferScope&) = delete;
+    FramebufferScope& operator=(const FramebufferScope&) = delete;
+
+  private:
+    GLint framebuffer_ = 0;
+    GLint viewport_[4] = {};
+};
+
+}  // namespace
+
+glm::mat4 cube_face_projection(int face, double near_mm, double far_mm) {
+    const CubeFaceBasis basis = cube_face_basis(face);
+    const double a = (far_mm + near_mm) / (far_mm - near_mm);
+    const double b = -2.0 * far_mm * near_mm / (far_mm - near_mm);
+    glm::dmat4 m(0.0);  // column-major: m[column][row]
+    for (int i = 0; i < 3; ++i) {
+        m[i][0] = basis.right[i];
+        m[i][1] = basis.up[i];
+        m[i][2] = basis.forward[i] * a;
+        m[i][3] = basis.forward[i];
+    }
+    m[3][2] = b;
+    return glm::mat4(m);
+}
+
+RingRenderer::RingRenderer(Program ring, Program background)
+    : ring_(std::move(ring)), background_(std::move(background)) {}
+
+Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
+    if (mesh.positions.size() != mesh.normals.size() || mesh.indices.size() % 3 != 0) {
+        return Error{"ring renderer: the mesh has " + std::to_string(mesh.positions.size()) +
+                     " positions, " + std::to_string(mesh.normals.size()) + " normals and " +
+                     std::to_string(mesh.indices.size()) + " indices (not whole triangles)"};
+    }
+    for (std::uint32_t i : mesh.indices) {
+        if (i >= mesh.positions.size()) {
+            return Error{"ring renderer: index " + std::to_string(i) + " past the " +
+                         std::to_string(mesh.positions.size()) + " vertices"};
+        }
+    }
+    auto ring = build_program("ring");
+    if (!ring) return Error{ring.error()};
+    auto background = build_program("background");
+    if (!background) return Error{background.error()};
+    RingRenderer r(std::move(ring).value(), std::move(background).value());
+    r.f0_ = mesh.f0;
+    r.roughness_ = mesh.roughness;
+    r.radius_mm_ = mesh.radius_mm();
+    r.index_count_ = static_cast<GLsizei>(mesh.indices.size());
+    r.vertex_array_ = make_vertex_array();
+    glBindVertexArray(r.vertex_array_.get());
+    if (r.index_count_ > 0) {
+        r.positions_ = upload(GL_ARRAY_BUFFER, mesh.positions.data(),
+                              mesh.positions.size() * sizeof(glm::vec3));
+        glVertexAttribPointer(0, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glEnableVertexAttribArray(0);
+        r.normals_ =
+            upload(GL_ARRAY_BUFFER, mesh.normals.data(), mesh.normals.size() * sizeof(glm::vec3));
+        glVertexAttribPointer(1, 3, GL_FLOAT, GL_FALSE, sizeof(glm::vec3), nullptr);
+        glEnableVertexAttribArray(1);
+        // The element buffer binding is part of the vertex array's state.
+        r.indices_ = upload(GL_ELEMENT_ARRAY_BUFFER, mesh.indices.data(),
+                            mesh.indices.size() * sizeof(std::uint32_t));
+    }
+    glBindVertexArray(0);
+    auto ok = gl_check("ring renderer: upload");
+    if (!ok) return Error{ok.error()};
+    return r;
+}
+
+void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
+                             bool eye_at_infinity, const ShadingSettings& lights,
+                             const EnvironmentCube& environment) const {
+    ring_.use();
+    ring_.set("u_view_projection", view_projection);
+    ring_.set("u_eye", eye);
+    ring_.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
+    ring_.set("u_f0", f0_);
+    ring_.set("u_roughness", roughness_);
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
+    ring_.set("u_environment", 0);
+    const int count = std::min<int>(static_cast<int>(lights.lights.size()), kMaxLights);
+    glm::vec4 position[kMaxLights] = {};
+    glm::vec3 colour[kMaxLights] = {};
+    for (int i = 0; i < count; ++i) {
+        const Light& l = lights.lights[static_cast<std::size_t>(i)];
+        position[i] = glm::vec4(glm::vec3(l.position), l.directional ? 0.0f : 1.0f);
+        colour[i] = glm::vec3(l.colour);
+    }
+    ring_.set("u_light_count", count);
+    glUniform4fv(ring_.uniform("u_light_position"), kMaxLights, &position[0].x);
+    glUniform3fv(ring_.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    glDisable(GL_BLEND);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glBindVertexArray(vertex_array_.get());
+    glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
+    glBindVertexArray(0);
+}
+
+Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
+                                const ShadingSettings& lights_from,
+                                const EnvironmentCube& environment) const {
+    if (index_count_ == 0) return true;
+    // Orthographic: every pixel looks along forward, so the eye is a direction (toward it).
+    const bool at_infinity = camera.orthographic();
+    const glm::vec3 eye = at_infinity ? glm::vec3(-camera.forward())
+                                      : glm::vec3(-camera.forward() * camera.distance());
+    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, environment);
+    return gl_check("ring pass");
+}
+
+Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& background,
+                                                   EnvironmentCube& target,
+                                                   const ShadingSettings& lights_from) const {
+    if (background.texture() == target.texture()) {
+        return Error{
+            "ring: environment cube: the target must differ from the background "
+            "(a cube cannot be sampled while it is rendered)"};
+    }
+    const FramebufferScope restore;
+    const int size = target.face_size();
+    Framebuffer framebuffer = make_framebuffer();
+    Renderbuffer depth = make_renderbuffer();
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
+    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, size, size);
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth.get());
+    glViewport(0, 0, size, size);
+    // The ring lies between the prongs' seat around the stone (a few mm out) and its own
+    // bounding sphere; near at 1/1000 of far keeps 24-bit depth ample.
+    const double far_mm = std::max(1.0, 1.01 * radius_mm_);
+    const double near_mm = 1e-3 * far_mm;
+    for (int face = 0; face < 6; ++face) {
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                               GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, target.texture(), 0);
+        const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
+        if (status != GL_FRAMEBUFFER_COMPLETE) {
+            return Error{"ring: environment cube: face " + std::to_string(face) +
+                         " cannot be rendered to (framebuffer status " + std::to_string(status) +
+                         "; RGBA16F needs EXT_color_buffer_half_float or EXT_color_buffer_float)"};
+        }
+        glDepthMask(GL_TRUE);
+        glClear(GL_DEPTH_BUFFER_BIT);
+        // background.frag with a camera at the centre: a perspective ray through tangent-unit
+        // image coordinates ±1 is exactly the face's 90° frustum.
+        const CubeFaceBasis basis = cube_face_basis(face);
+        background_.use();
+        background_.set("u_cam_forward", glm::vec3(basis.forward));
+        background_.set("u_cam_right", glm::vec3(basis.right));
+        background_.set("u_cam_up", glm::vec3(basis.up));
+        background_.set("u_cam_half", glm::vec2(1.0f));
+        background_.set("u_cam_distance", 1.0f);
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_CUBE_MAP, background.texture());
+        background_.set("u_environment", 0);
+        background_.set("u_use_environment", 1);
+        glDisable(GL_BLEND);
+        glDisable(GL_DEPTH_TEST);
+        glBindVertexArray(vertex_array_.get());  // no attributes: fullscreen.vert needs none
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        if (index_count_ > 0) {
+            draw_mesh(cube_face_projection(face, near_mm, far_mm), glm::vec3(0.0f), false,
+                      lights_from, background);
+        }
+    }
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
+    return gl_check("ring: environment cube");
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,59 @@
+#pragma once
+// Draws the ring with physically based metal shading (Cook-Torrance: GGX distribution, Smith
+// masking, Schlick Fresnel from the metal's F0), lit by up to kMaxLights lights and by the
+// environment cube along the reflected direction; and renders the scene around the stone
+// (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
+// from the stone's centre (DESIGN.md, "The method", 3. Jewellery).
+
+#include "gpu/environment_cube.hpp"
+#include "gpu/gl_handles.hpp"
+#include "gpu/program.hpp"
+#include "gpu/ring_mesh.hpp"
+#include "render/camera.hpp"
+#include "render/shading.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+// The 90° perspective that renders cube face `face` from the stone's centre: clip x, y =
+// (p·right, p·up) of cube_face_basis(face), clip w = p·forward, so pixel (s, t) of a face
+// rendered into a GL framebuffer (t = 0 at its bottom row, i.e. the face's first row in
+// memory) shows the direction cube_face_direction(face, s, t). Depth maps view distances
+// near_mm .. far_mm along forward onto -1..1 as a GL perspective does.
+glm::mat4 cube_face_projection(int face, double near_mm, double far_mm);
+
+class RingRenderer {
+  public:
+    // An empty mesh is allowed: a loose stone, where only the environment is drawn into cubes.
+    static Result<RingRenderer> make(const RingMesh& mesh);
+
+    // Draws the ring into the bound framebuffer with depth test and depth write (the stone
+    // layer has written its depth already), opaque. Uses view_projection(camera,
+    // scene_radius_mm), so the ring must lie inside that sphere.
+    Result<bool> draw(const Camera& camera, double scene_radius_mm,
+                      const ShadingSettings& lights_from, const EnvironmentCube& environment) const;
+
+    // Renders background (the environment) + ring into `target`'s six faces as seen from the
+    // stone centre (perspective 90° per face). `target` must be another cube than
+    // `background`. Restores the caller's framebuffer binding and viewport.
+    Result<bool> render_environment_cube(const EnvironmentCube& background, EnvironmentCube& target,
+                                         const ShadingSettings& lights_from) const;
+
+  private:
+    RingRenderer(Program ring, Program background);
+    void draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye, bool eye_at_infinity,
+                   const ShadingSettings& lights, const EnvironmentCube& environment) const;
+
+    Program ring_;
+    Program background_;
+    VertexArray vertex_array_;
+    Buffer positions_;
+    Buffer normals_;
+    Buffer indices_;
+    GLsizei index_count_ = 0;
+    glm::vec3 f0_{1.0f};
+    float roughness_ = 0.25f;
+    double radius_mm_ = 0.0;
+};
+
+}  // namespace gem::gpu

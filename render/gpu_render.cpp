@@ -1,0 +1,174 @@
+#include "gpu_render.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <filesystem>
+#include <numbers>
+#include <vector>
+
+#include "gpu/egl_context.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "gpu/render_target.hpp"
+#include "gpu/ring_mesh.hpp"
+#include "optics/material.hpp"
+#include "render/image.hpp"
+#include "scene/scene_build.hpp"
+
+namespace gem {
+namespace {
+
+int fail(const std::string& message) {
+    std::fprintf(stderr, "gemrender: %s\n", message.c_str());
+    return 1;
+}
+
+Result<gpu::RingParams::Metal> parse_metal(const std::string& name) {
+    using M = gpu::RingParams::Metal;
+    if (name == "yellow_gold") return M::yellow_gold;
+    if (name == "white_gold") return M::white_gold;
+    if (name == "platinum") return M::platinum;
+    if (name == "silver") return M::silver;
+    return Error{"--metal: unknown metal '" + name +
+                 "' (yellow_gold, white_gold, platinum, silver)"};
+}
+
+double percentile(std::vector<double> v, double p) {
+    if (v.empty()) return 0.0;
+    std::sort(v.begin(), v.end());
+    const auto i = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
+    return v[std::min(i, v.size() - 1)];
+}
+
+}  // namespace
+
+int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
+    auto context = gpu::EglContext::headless();
+    if (!context) return fail(context.error());
+
+    gpu::FrameSetup setup;
+    if (o.method == "table") {
+        setup.method = gpu::Method::table;
+        if (o.database.empty()) return fail("--method table needs --db FILE.gemdb");
+        auto db = Database::open(o.database);
+        if (!db) return fail(db.error());
+        setup.database = std::make_shared<const Database>(std::move(db).value());
+        setup.material = setup.database->material();
+    } else if (o.method == "trace" || o.method == "phong") {
+        setup.method = o.method == "trace" ? gpu::Method::trace : gpu::Method::phong;
+        auto stone = build_stone(scene);
+        if (!stone) return fail(stone.error());
+        setup.stone = std::move(stone).value();
+        setup.material = setup.stone.material;
+    } else {
+        return fail("--method: unknown method '" + o.method + "'");
+    }
+    // Colour and absorption are shading-time choices, also over a database's material.
+    if (scene.material.colour) setup.material.body_colour = *scene.material.colour;
+    if (scene.material.absorption_per_mm) {
+        setup.material.absorption_per_mm = *scene.material.absorption_per_mm;
+    }
+    const RenderSettings settings = render_settings(scene);
+    setup.shading = settings.shading;
+    setup.trace = settings.trace;
+    setup.table.blend = o.blend;
+    setup.table.wait_for_views = o.frames == 1;
+    auto environment = build_environment(scene);
+    if (!environment) return fail(environment.error());
+    setup.environment = &environment.value();
+    if (!scene.environment.background_is_environment) {
+        setup.background_colour = glm::vec3(scene.environment.background_colour);
+    }
+
+    gpu::RingMesh ring;
+    if (!o.ring.empty()) {
+        auto metal = parse_metal(o.metal);
+        if (!metal) return fail(metal.error());
+        const Stone& stone =
+            setup.method == gpu::Method::table ? setup.database->stone() : setup.stone;
+        Result<gpu::RingMesh> made = Error{""};
+        if (o.ring == "parametric") {
+            gpu::RingParams params;
+            params.metal = metal.value();
+            made = gpu::make_ring(params, stone);
+        } else {
+            made = gpu::load_ring_obj(o.ring, metal.value(), gpu::RingParams{}.roughness);
+        }
+        if (!made) return fail(made.error());
+        ring = std::move(made).value();
+        setup.ring = &ring;
+    }
+
+    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    if (!renderer) return fail(renderer.error());
+    gpu::FrameRenderer& r = renderer.value();
+    auto target = gpu::RenderTarget::make(scene.width, scene.height);
+    if (!target) return fail(target.error());
+    target.value().bind();
+
+    if (!o.frames_dir.empty()) {
+        std::error_code ec;
+        std::filesystem::create_directories(o.frames_dir, ec);
+        if (ec) return fail("cannot create " + o.frames_dir + ": " + ec.message());
+    }
+    const double step = o.turn_deg != 0.0 ? o.turn_deg : 360.0 / std::max(o.frames, 1);
+    std::vector<double> frame_ms;
+    std::vector<double> stream_ms;
+    Image last;
+    for (int f = 0; f < o.frames; ++f) {
+        CameraSettings cs = scene.camera;
+        cs.azimuth_deg += step * f;
+        auto camera = Camera::make(cs, r.stone_radius_mm(), scene.width, scene.height);
+        if (!camera) return fail(camera.error());
+        if (r.table() != nullptr && o.frames > 1) {
+            // The turntable turns about +y at `step` per frame of a 60 Hz display.
+            const double omega = step * std::numbers::pi / 180.0 * 60.0;
+            r.table()->cache().prefetch(
+                -camera.value().forward(), {0.0, omega, 0.0},
+                r.table()->level_for(r.table()->database().camera().field_mm /
+                                     camera.value().pixel_size()));
+        }
+        auto stats = r.render(camera.value(), true);
+        if (!stats) return fail(stats.error());
+        const gpu::TableFrameStats& t = stats.value().table;
+        frame_ms.push_back(stats.value().cpu_ms);
+        stream_ms.push_back(t.acquire_ms + t.upload_ms + t.wait_ms);
+        if (o.frames > 1) {
+            std::printf("frame %4d: %7.2f ms", f, stats.value().cpu_ms);
+            if (r.table() != nullptr) {
+                std::printf("  streaming %6.2f ms (%u uploads, level %u%s)", stream_ms.back(),
+                            t.uploads, t.level, t.exact ? "" : ", stand-in");
+            }
+            std::printf("\n");
+        }
+        if (!o.frames_dir.empty() || f + 1 == o.frames) {
+            last = target.value().read();
+            if (!o.frames_dir.empty()) {
+                char name[32];
+                std::snprintf(name, sizeof name, "frame-%04d.png", f);
+                auto written = write_png(last, std::filesystem::path(o.frames_dir) / name);
+                if (!written) return fail(written.error());
+            }
+        }
+    }
+    auto written = write_png(last, o.out);
+    if (!written) return fail(written.error());
+    double total = 0.0;
+    double streaming = 0.0;
+    for (std::size_t i = 0; i < frame_ms.size(); ++i) {
+        total += frame_ms[i];
+        streaming += stream_ms[i];
+    }
+    std::printf("gemrender: wrote %s (%d×%d, method %s%s%s) on %s\n",
+                std::filesystem::absolute(o.out).c_str(), scene.width, scene.height,
+                o.method.c_str(), o.blend ? ", blend" : "", o.ring.empty() ? "" : ", ring",
+                context.value().description().c_str());
+    std::printf(
+        "gemrender: %zu frames: mean %.2f ms, median %.2f ms, p95 %.2f ms per frame; "
+        "streaming %.1f%% of frame time\n",
+        frame_ms.size(), total / static_cast<double>(frame_ms.size()), percentile(frame_ms, 0.5),
+        percentile(frame_ms, 0.95), total > 0.0 ? 100.0 * streaming / total : 0.0);
+    return 0;
+}
+
+}  // namespace gem

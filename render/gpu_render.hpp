@@ -1,0 +1,27 @@
+#pragma once
+// gemrender's GPU path: renders a scene headless through EGL with the table, trace or phong
+// method, optionally with a ring, as one image or as a turntable sequence that reports the
+// time of every frame (glFinish-bounded) and the time spent streaming views.
+
+#include <string>
+
+#include "scene/scene.hpp"
+
+namespace gem {
+
+struct GpuRenderOptions {
+    std::string method;    // table, trace, phong
+    std::string database;  // table: the .gemdb file
+    bool blend = false;    // table: blend the two nearest stored views
+    std::string ring;      // "", "parametric" or an OBJ file
+    std::string metal = "yellow_gold";
+    int frames = 1;          // > 1: a turntable sequence
+    double turn_deg = 0.0;   // azimuth step per frame; 0: 360 / frames
+    std::string frames_dir;  // where every frame goes as frame-NNNN.png (optional)
+    std::string out;         // the (last) image
+};
+
+// Returns the process exit status; messages go to stdout/stderr prefixed "gemrender:".
+int render_gpu(const Scene& scene, const GpuRenderOptions& options);
+
+}  // namespace gem
