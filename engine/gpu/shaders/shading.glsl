@@ -25,7 +25,7 @@ uniform vec3 u_absorption;    // Beer-Lambert sigma per channel, 1/mm
 // Facet planes, one texel each (n.xyz, d): n.p = d on the facet. Row-major, kTexWidth wide.
 uniform highp sampler2D u_planes;
 #ifdef NON_CONVEX
-// Triangles, three texels each (a vertex per texel, w unused).
+// Triangles, three texels each (a corner per texel, w = the triangle's facet).
 uniform highp sampler2D u_triangles;
 uniform int u_triangle_count;
 #endif
