@@ -9,10 +9,9 @@
 #include "commands.hpp"
 #include "progress.hpp"
 #include "stone_file.hpp"
+#include "table_build.hpp"
 #include "tables/view_grid.hpp"
-#include "tables/writer.hpp"
 #include "trace/parallel.hpp"
-#include "view_trace.hpp"
 
 namespace gem::tables {
 
@@ -42,8 +41,6 @@ int run_build(const BuildOptions& o) {
     params.dispersion = o.dispersion;
     Result<ViewGrid> grid = ViewGrid::build(params.grid, stone.symmetry);
     if (!grid) return fail("--spacing/--min-elevation: " + grid.error());
-    const CameraModel camera = table_camera(stone);
-    const ViewTracer tracer(stone, camera, grid.value(), params);
 
     const auto views = static_cast<std::uint32_t>(grid.value().size());
     std::uint64_t pixels_per_view = 0;
@@ -57,24 +54,9 @@ int run_build(const BuildOptions& o) {
     std::fflush(stdout);
 
     Progress progress(std::uint64_t{views} * params.levels.size(), Progress::stdout_is_terminal());
-    TraceViewFn trace = [&](std::uint32_t view, std::uint32_t level) {
-        std::vector<RayList> lists = tracer.trace_view(view, level);
-        // With dispersion the derivative pass follows; the table counts as done after it.
-        if (!params.dispersion) progress.advance();
-        return lists;
-    };
-    TraceDerivativesFn derivatives = [&](std::uint32_t view, std::uint32_t level,
-                                         const std::vector<RayList>& lists) {
-        std::vector<glm::dvec3> d = tracer.derivatives(view, level, lists);
-        progress.advance();
-        return d;
-    };
-    WriteOptions options;
-    options.threads = jobs;
     const auto start = std::chrono::steady_clock::now();
     Result<WriteSummary> written =
-        write_database(o.out, stone, camera, params, grid.value(), trace,
-                       params.dispersion ? derivatives : TraceDerivativesFn{}, options);
+        trace_and_write(o.out, stone, params, grid.value(), jobs, [&] { progress.advance(); });
     progress.finish();
     if (!written) return fail(written.error());
     const double seconds =

@@ -15,13 +15,24 @@ Result<Texture> upload_texel_array(const float* rgba, std::size_t texels, const 
         return Error{std::string(what) + ": " + std::to_string(texels) +
                      " texels exceed the GPU's texture size limit"};
     }
-    // Padded to whole rows so one upload fills the texture.
-    std::vector<float> padded(rows * kTextureWidth * 4, 0.0f);
-    std::copy(rgba, rgba + texels * 4, padded.begin());
+    // Whole rows straight from `rgba`, then the partial last row: no padded copy (a view's
+    // rays are tens of megabytes).
+    const std::size_t full_rows = texels / kTextureWidth;
+    const std::size_t rest = texels % kTextureWidth;
     Texture t = make_texture();
     glBindTexture(GL_TEXTURE_2D, t.get());
     glTexImage2D(GL_TEXTURE_2D, 0, GL_RGBA32F, kTextureWidth, static_cast<GLsizei>(rows), 0,
-                 GL_RGBA, GL_FLOAT, padded.data());
+                 GL_RGBA, GL_FLOAT, nullptr);
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
+    if (full_rows > 0) {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kTextureWidth, static_cast<GLsizei>(full_rows),
+                        GL_RGBA, GL_FLOAT, rgba);
+    }
+    if (rest > 0) {
+        glTexSubImage2D(GL_TEXTURE_2D, 0, 0, static_cast<GLint>(full_rows),
+                        static_cast<GLsizei>(rest), 1, GL_RGBA, GL_FLOAT,
+                        rgba + full_rows * kTextureWidth * 4);
+    }
     // RGBA32F is not filterable in ES 3.0: nearest only, read with texelFetch.
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);

@@ -79,7 +79,8 @@ Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acqu
     view->level = acquired.level;
     view->side = static_cast<int>(v.side);
 
-    std::vector<std::uint32_t> pixels(2 * v.ray_count.size());
+    std::vector<std::uint32_t>& pixels = pixel_scratch_;
+    pixels.resize(2 * v.ray_count.size());
     for (std::size_t p = 0; p < v.ray_count.size(); ++p) {
         pixels[2 * p] = v.ray_offset[p];
         pixels[2 * p + 1] = v.ray_count[p];
@@ -91,35 +92,29 @@ Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acqu
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
 
+    // a: direction, weight; b: position, path; c: d(direction)/dn (zero without), facet.
     const std::size_t rays = v.direction.size();
-    std::vector<float> a(4 * rays);
-    std::vector<float> b(4 * rays);
-    std::vector<float> c(4 * rays, 0.0f);
+    std::vector<float>& a = ray_scratch_[0];
+    std::vector<float>& b = ray_scratch_[1];
+    std::vector<float>& c = ray_scratch_[2];
+    a.resize(4 * rays);
+    b.resize(4 * rays);
+    c.resize(4 * rays);
     for (std::size_t r = 0; r < rays; ++r) {
-        a[4 * r + 0] = v.direction[r].x;
-        a[4 * r + 1] = v.direction[r].y;
-        a[4 * r + 2] = v.direction[r].z;
-        a[4 * r + 3] = v.weight[r];
-        b[4 * r + 0] = v.position[r].x;
-        b[4 * r + 1] = v.position[r].y;
-        b[4 * r + 2] = v.position[r].z;
-        b[4 * r + 3] = v.path_mm[r];
-        if (!v.dir_dn.empty()) {
-            c[4 * r + 0] = v.dir_dn[r].x;
-            c[4 * r + 1] = v.dir_dn[r].y;
-            c[4 * r + 2] = v.dir_dn[r].z;
-        }
-        c[4 * r + 3] = static_cast<float>(v.facet[r]);
+        const glm::vec3 dn = v.dir_dn.empty() ? glm::vec3(0.0f) : v.dir_dn[r];
+        const float ra[4] = {v.direction[r].x, v.direction[r].y, v.direction[r].z, v.weight[r]};
+        const float rb[4] = {v.position[r].x, v.position[r].y, v.position[r].z, v.path_mm[r]};
+        const float rc[4] = {dn.x, dn.y, dn.z, static_cast<float>(v.facet[r])};
+        std::copy(ra, ra + 4, a.begin() + static_cast<std::ptrdiff_t>(4 * r));
+        std::copy(rb, rb + 4, b.begin() + static_cast<std::ptrdiff_t>(4 * r));
+        std::copy(rc, rc + 4, c.begin() + static_cast<std::ptrdiff_t>(4 * r));
     }
-    auto ta = upload_texel_array(a.data(), rays, "table view rays");
-    if (!ta) return Error{ta.error()};
-    auto tb = upload_texel_array(b.data(), rays, "table view rays");
-    if (!tb) return Error{tb.error()};
-    auto tc = upload_texel_array(c.data(), rays, "table view rays");
-    if (!tc) return Error{tc.error()};
-    view->rays_a = std::move(ta).value();
-    view->rays_b = std::move(tb).value();
-    view->rays_c = std::move(tc).value();
+    Texture* targets[3] = {&view->rays_a, &view->rays_b, &view->rays_c};
+    for (int i = 0; i < 3; ++i) {
+        auto t = upload_texel_array(ray_scratch_[i].data(), rays, "table view rays");
+        if (!t) return Error{t.error()};
+        *targets[i] = std::move(t).value();
+    }
     auto ok = gl_check("table method: view upload");
     if (!ok) return Error{ok.error()};
 
@@ -219,21 +214,25 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
                                         frame.material.index(kChannelNm[1]) - nd,
                                         frame.material.index(kChannelNm[2]) - nd));
     }
+    // table.frag's uniforms of view slots 0 and 1: four textures, image map, frame, side.
+    static constexpr const char* kSlotUniforms[2][7] = {
+        {"u_pixels0", "u_rays_a0", "u_rays_b0", "u_rays_c0", "u_image_map0", "u_to_stone0",
+         "u_side0"},
+        {"u_pixels1", "u_rays_a1", "u_rays_b1", "u_rays_c1", "u_image_map1", "u_to_stone1",
+         "u_side1"}};
     auto bind_view = [&](const GpuView& v, const AcquiredView& a, int slot, int unit) {
-        const std::string s = std::to_string(slot);
+        const char* const* names = kSlotUniforms[slot];
         const Texture* textures[4] = {&v.pixels, &v.rays_a, &v.rays_b, &v.rays_c};
-        const char* names[4] = {"u_pixels", "u_rays_a", "u_rays_b", "u_rays_c"};
         for (int i = 0; i < 4; ++i) {
             glActiveTexture(GL_TEXTURE0 + unit + i);
             glBindTexture(GL_TEXTURE_2D, textures[i]->get());
-            p.set((names[i] + s).c_str(), unit + i);
+            p.set(names[i], unit + i);
         }
         const glm::dmat2 map = grid.image_map(a.match, asked, camera.right(), camera.up());
-        p.set(("u_image_map" + s).c_str(), glm::mat2(map));
+        p.set(names[4], glm::mat2(map));
         // g · asked ≈ stored, so a stored-frame vector v is gᵀ v in the stone frame.
-        p.set(("u_to_stone" + s).c_str(),
-              glm::mat3(glm::transpose(grid.group()[a.match.symmetry])));
-        p.set(("u_side" + s).c_str(), v.side);
+        p.set(names[5], glm::mat3(glm::transpose(grid.group()[a.match.symmetry])));
+        p.set(names[6], v.side);
     };
     bind_view(*v0, first, 0, 3);
     p.set("u_views", v1 != nullptr ? 2 : 1);
@@ -242,15 +241,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     // one unit (their default, unit 0, holds the cube) fail the draw in GL ES.
     bind_view(v1 != nullptr ? *v1 : *v0, v1 != nullptr ? second : first, 1, 7);
 
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glBindVertexArray(empty_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
+    draw_stone_pass(empty_);
     stats.drawn = true;
     stats.views = v1 != nullptr ? 2 : 1;
     stats.blend = v1 != nullptr ? blend : 1.0;

@@ -69,6 +69,9 @@ class TableMethod {
     VertexArray empty_;
     // The views on the GPU, most recently used first; a blend needs two, a turn a third.
     std::vector<std::unique_ptr<GpuView>> gpu_views_;
+    // Packing space for uploads, kept so a turn does not reallocate tens of MB per view.
+    std::vector<std::uint32_t> pixel_scratch_;
+    std::vector<float> ray_scratch_[3];
 };
 
 }  // namespace gem::gpu

@@ -38,14 +38,7 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     program_.set("u_r_factor", static_cast<float>(trace.r_factor));
     program_.set("u_t_factor", static_cast<float>(trace.t_factor));
 
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    // The shader writes the entry point's depth; the ring drawn later tests against it.
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glBindVertexArray(empty_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    draw_stone_pass(empty_);
     return gl_check("trace pass");
 }
 

@@ -21,7 +21,6 @@ class TraceMethod {
     // Draws the stone layer for `frame` into the bound framebuffer (viewport set by caller).
     // `trace` gives depth, weight threshold, weight model (fresnel or thesis R/T factors) and
     // r/t factors; the refractive index traced with is frame.material.index().
-    // Leaves blending (src alpha, one minus src alpha) and the depth test (always, written) on.
     Result<bool> draw(const StoneFrame& frame, const TraceSettings& trace);
 
   private:

@@ -22,9 +22,8 @@
 #include "gpu/render_target.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
-#include "tables/writer.hpp"
+#include "table_build.hpp"
 #include "trace/parallel.hpp"
-#include "view_trace.hpp"
 
 namespace {
 
@@ -40,16 +39,11 @@ std::shared_ptr<const gem::Database> build_database(const gem::Stone& stone, int
     params.grid.min_elevation_rad = -10.0 * std::numbers::pi / 180.0;
     params.max_depth = static_cast<std::uint32_t>(depth);
     auto grid = gem::ViewGrid::build(params.grid, stone.symmetry);
-    const gem::CameraModel camera = gem::tables::table_camera(stone);
-    const gem::tables::ViewTracer tracer(stone, camera, grid.value(), params);
     const fs::path path =
         fs::temp_directory_path() / ("bench_gpu_depth" + std::to_string(depth) + ".gemdb");
-    gem::WriteOptions options;
-    options.threads = gem::worker_count();
     const auto start = Clock::now();
-    auto written = gem::write_database(
-        path, stone, camera, params, grid.value(),
-        [&](std::uint32_t v, std::uint32_t l) { return tracer.trace_view(v, l); }, {}, options);
+    auto written =
+        gem::tables::trace_and_write(path, stone, params, grid.value(), gem::worker_count());
     if (!written) {
         std::fprintf(stderr, "bench_gpu: %s\n", written.error().c_str());
         std::exit(1);

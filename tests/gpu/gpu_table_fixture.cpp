@@ -7,8 +7,7 @@
 #include "geometry/cuts.hpp"
 #include "optics/material.hpp"
 #include "render/shading.hpp"
-#include "tables/writer.hpp"
-#include "view_trace.hpp"
+#include "table_build.hpp"
 
 namespace gem::gpu_test {
 
@@ -29,23 +28,11 @@ Result<const TableFixture*> round_brilliant_database(double spacing_deg, bool di
     params.dispersion = dispersion;
     auto grid = ViewGrid::build(params.grid, fixture->stone.symmetry);
     if (!grid) return Error{grid.error()};
-    const CameraModel camera = tables::table_camera(fixture->stone);
-    const tables::ViewTracer tracer(fixture->stone, camera, grid.value(), params);
     std::filesystem::create_directories(GEM_ARTIFACT_DIR);
     fixture->path =
         std::filesystem::path(GEM_ARTIFACT_DIR) /
         ("gpu_round_" + std::to_string(int(spacing_deg)) + (dispersion ? "_dn" : "") + ".gemdb");
-    WriteOptions options;
-    options.threads = 2;
-    auto written = write_database(
-        fixture->path, fixture->stone, camera, params, grid.value(),
-        [&](std::uint32_t v, std::uint32_t l) { return tracer.trace_view(v, l); },
-        dispersion ? TraceDerivativesFn(
-                         [&](std::uint32_t v, std::uint32_t l, const std::vector<RayList>& lists) {
-                             return tracer.derivatives(v, l, lists);
-                         })
-                   : TraceDerivativesFn{},
-        options);
+    auto written = tables::trace_and_write(fixture->path, fixture->stone, params, grid.value(), 2);
     if (!written) return Error{written.error()};
     auto db = Database::open(fixture->path);
     if (!db) return Error{db.error()};
