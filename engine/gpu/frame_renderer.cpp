@@ -86,14 +86,8 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
 
 Result<bool> FrameRenderer::update_ring_cube() {
     if (!ring_) return true;
-    GLint framebuffer = 0;
-    GLint viewport[4] = {};
-    glGetIntegerv(GL_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_VIEWPORT, viewport);
-    auto done = ring_->render_environment_cube(*environment_cube_, *ring_cube_, setup_.shading);
-    glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    return done;
+    // The ring renderer restores the caller's framebuffer and viewport itself.
+    return ring_->render_environment_cube(*environment_cube_, *ring_cube_, setup_.shading);
 }
 
 Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
