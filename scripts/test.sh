@@ -13,7 +13,7 @@ ctest --test-dir build/test --output-on-failure -j "$jobs"
 if [ "${GEM_SKIP_SANITIZERS:-0}" != 1 ]; then
   cmake -S . -B build/asan -G Ninja -DCMAKE_BUILD_TYPE=Debug -DGEM_WERROR=ON -DGEM_SANITIZE=ON \
     -DCMAKE_CXX_FLAGS="-O1" >/dev/null
-  cmake --build build/asan -j "$jobs" --target gem_unit_tests
+  cmake --build build/asan -j "$jobs" --target gem_unit_test_targets
   ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --test-dir build/asan --output-on-failure -j "$jobs" -L unit
 fi
