@@ -1,11 +1,17 @@
 #!/usr/bin/env bash
-# Sets up a fresh Debian 12 machine, builds gemkiosk and runs its main job: render the default
-# stone (a Tolkowsky round brilliant in diamond) with the exact CPU tracer to a PNG.
+# Sets up a fresh Debian 12 machine, builds gemkiosk and its default catalogue (ray-table
+# databases traced from config/stones/), and runs the kiosk's main job headless: the shipped
+# config on an off-screen 1920×1080 display, a recorded one-finger drag replayed as if from a
+# touchscreen, every 5th frame and the last one written as PNG, frame times as CSV.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 bash scripts/install-deps.sh
 cmake -S . -B build/release -G Ninja -DCMAKE_BUILD_TYPE=Release -DGEM_BUILD_TESTS=OFF >/dev/null
-cmake --build build/release --target gemrender
-mkdir -p out
-./build/release/render/gemrender --out out/gemrender-default.png "$@"
-echo "main: the default stone is rendered at $(pwd)/out/gemrender-default.png"
+cmake --build build/release --target gemkiosk gemtables default_catalogue
+rm -rf out/kiosk && mkdir -p out/kiosk
+./build/release/kiosk/gemkiosk --config config/gemkiosk.toml --backend headless \
+  --catalogue build/release/catalogue --state-dir out/kiosk/state \
+  --snapshot-dir out/kiosk --snapshot-every 5 --snapshot-last \
+  --replay tests/fixtures/kiosk/atmel-drag-right.events --exit-after-replay \
+  --stats out/kiosk/frames.csv "$@"
+echo "main: the kiosk's frames are in $(pwd)/out/kiosk (last.png is the last one)"

@@ -21,6 +21,8 @@ std::vector<ProgramSpec> all_program_specs() {
         {"phong", {"phong.vert"}, {"phong.frag"}, {}},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}},
+        // The kiosk's rotate-and-encode copy to the window surface (kiosk/display/present_pass).
+        {"present", {"fullscreen.vert"}, {"present.frag"}, {}},
     };
 }
 

@@ -74,13 +74,19 @@ Result<Environment> Environment::load_image(const std::filesystem::path& path) {
 glm::dvec3 Environment::radiance(const glm::dvec3& d) const {
     switch (kind_) {
         case Kind::uniform:
-            return colour_;
+            return colour_ * intensity_;
         case Kind::image:
-            return image_radiance(d);
+            return image_radiance(d) * intensity_;
         case Kind::studio:
             break;
     }
-    return studio_radiance(d);
+    return studio_radiance(d) * intensity_;
+}
+
+Environment Environment::with_intensity(double intensity) const {
+    Environment scaled = *this;
+    scaled.intensity_ = intensity_ * intensity;
+    return scaled;
 }
 
 glm::dvec3 Environment::image_radiance(const glm::dvec3& d) const {

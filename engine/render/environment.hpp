@@ -27,6 +27,9 @@ class Environment {
 
     // Radiance arriving from unit direction `d` (i.e. seen looking along d).
     glm::dvec3 radiance(const glm::dvec3& d) const;
+    // The same surroundings, every radiance multiplied by `intensity` (a lighting preset's
+    // environment level).
+    Environment with_intensity(double intensity) const;
 
     Kind kind() const { return kind_; }
 
@@ -36,6 +39,7 @@ class Environment {
 
     Kind kind_ = Kind::studio;
     glm::dvec3 colour_{1.0};
+    double intensity_ = 1.0;
     int width_ = 0;
     int height_ = 0;
     std::vector<glm::vec3> pixels_;

@@ -21,6 +21,12 @@ struct GestureOptions {
     double attract_deg_per_s = 12.0;  // the ring's slow turn in attract mode
     double attract_preset_s = 20.0;   // attract mode cycles presets this often
     double attract_stone_s = 60.0;    // and stones this often
+    // Added by the gestures module (defaults chosen there; the config may leave them out):
+    double attract_elevation_deg = 30.0;  // attract mode eases the view to this elevation,
+    double attract_ease_s = 4.0;          // over this long (and roll and zoom back to the start)
+    double fling_window_s = 0.08;         // a fling's speed is measured over this much drag
+    double fling_min_deg_per_s = 15.0;    // slower than this on lifting: no inertia
+    double fling_max_deg_per_s = 720.0;   // a fling never spins faster than this
 };
 
 }  // namespace gem::kiosk

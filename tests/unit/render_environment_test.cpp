@@ -128,3 +128,19 @@ TEST(RenderEnvironment, StudioIsDarkBelowWithBrightLightsAbove) {
 
 }  // namespace
 }  // namespace gem
+
+TEST(Environment, WithIntensityScalesEveryRadiance) {
+    // A lighting preset's environment level multiplies what every direction sends; applying
+    // two levels multiplies them.
+    const gem::Environment studio = gem::Environment::studio();
+    const gem::Environment dimmer = studio.with_intensity(0.25).with_intensity(2.0);
+    for (const glm::dvec3 d : {glm::dvec3(0, 1, 0), glm::dvec3(0.6, 0.0, 0.8), glm::dvec3(0, -1, 0),
+                               glm::dvec3(-0.48, 0.6, -0.64)}) {
+        const glm::dvec3 expected = studio.radiance(d) * 0.5;
+        EXPECT_NEAR(dimmer.radiance(d).x, expected.x, 1e-12);
+        EXPECT_NEAR(dimmer.radiance(d).y, expected.y, 1e-12);
+        EXPECT_NEAR(dimmer.radiance(d).z, expected.z, 1e-12);
+    }
+    EXPECT_EQ(gem::Environment::uniform({1, 2, 3}).with_intensity(3.0).radiance({0, 0, 1}),
+              glm::dvec3(3, 6, 9));
+}

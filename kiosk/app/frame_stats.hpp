@@ -1,0 +1,39 @@
+#pragma once
+// What the kiosk measures about itself while it runs: the time each frame took from the start
+// of its drawing to present() returning, the interval between presented frames, and the time
+// from an input event to the presentation of the first frame that shows it. The summary line
+// is what the closing log line and the benchmark report; a CSV keeps every frame.
+
+#include <cstdio>
+#include <string>
+#include <vector>
+
+namespace gem::kiosk {
+
+struct FrameRecord {
+    double start_s = 0.0;       // CLOCK_MONOTONIC when drawing began
+    double draw_ms = 0.0;       // drawing + present, glFinish-bounded
+    double interval_ms = 0.0;   // since the previous presented frame (0 for the first)
+    double latency_ms = -1.0;   // oldest input event shown for the first time; -1: none
+    double streaming_ms = 0.0;  // table views: cache lookups, waits and uploads
+};
+
+class FrameStats {
+  public:
+    void add(const FrameRecord& record) { frames_.push_back(record); }
+    const std::vector<FrameRecord>& frames() const { return frames_; }
+
+    // "600 frames in 40.1 s: 15.0 frames/s; draw ms p50 63.1 p90 70.2 p99 81.0 max 90.3;
+    //  input-to-frame ms p50 .. (n events)".
+    std::string summary() const;
+    // One row per frame; errors name the file.
+    bool write_csv(const std::string& path, std::string& error) const;
+
+  private:
+    std::vector<FrameRecord> frames_;
+};
+
+// The p-quantile (0..1) of `values` by the nearest-rank method; 0 for an empty list.
+double quantile(std::vector<double> values, double p);
+
+}  // namespace gem::kiosk

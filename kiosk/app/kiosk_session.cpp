@@ -1,0 +1,397 @@
+#include "app/kiosk_session.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+#include <numbers>
+
+#include "app/process_info.hpp"
+#include "app/snapshot.hpp"
+#include "app/start_view.hpp"
+#include "catalogue/catalogue_store.hpp"
+#include "display/open_display.hpp"
+#include "input/touch_mapping.hpp"
+#include "render/camera.hpp"
+#include "service/log.hpp"
+
+namespace gem::kiosk {
+
+namespace {
+
+// How long a missing display waits before the kiosk tries to open it again.
+constexpr double kDisplayRetryS = 5.0;
+
+gpu::Method to_gpu(RenderMethod method) {
+    switch (method) {
+        case RenderMethod::trace:
+            return gpu::Method::trace;
+        case RenderMethod::phong:
+            return gpu::Method::phong;
+        case RenderMethod::table:
+            break;
+    }
+    return gpu::Method::table;
+}
+
+CatalogueOptions catalogue_options(const KioskConfig& config) {
+    CatalogueOptions options;
+    options.inbox_dir = config.catalogue.inbox_dir;
+    options.extra_dirs = config.catalogue.watch_dirs;
+    options.state_dir = config.catalogue.state_dir;
+    options.default_catalogue = config.catalogue.default_dir;
+    options.settle_time =
+        std::chrono::milliseconds(static_cast<long>(config.catalogue.settle_s * 1000.0));
+    return options;
+}
+
+}  // namespace
+
+Result<std::unique_ptr<KioskSession>> KioskSession::make(const KioskRun& run) {
+    std::unique_ptr<KioskSession> s(new KioskSession(run));
+    s->started_s_ = monotonic_now_s();
+    auto configured = s->configure();
+    if (!configured) return Error{configured.error()};
+    return s;
+}
+
+KioskSession::~KioskSession() = default;
+
+Result<bool> KioskSession::configure() {
+    const ConfigLoad load = load_config(run_.config_file);
+    log_config_errors(load);
+    config_ = load.config;
+    set_log_threshold(config_.log_level);
+    // The command line outranks the file: CI and support runs say exactly what they need.
+    if (run_.backend) config_.display.backend = *run_.backend;
+    if (run_.width) config_.display.headless_width = *run_.width;
+    if (run_.height) config_.display.headless_height = *run_.height;
+    if (run_.rate_hz) config_.display.headless_rate_hz = *run_.rate_hz;
+    if (run_.catalogue) config_.catalogue.default_dir = *run_.catalogue;
+    if (run_.state_dir) {
+        config_.catalogue.state_dir = *run_.state_dir;
+        config_.catalogue.inbox_dir = *run_.state_dir / "inbox";
+    }
+    if (run_.snapshot_dir) config_.snapshot.dir = *run_.snapshot_dir;
+    if (run_.snapshot_every) config_.snapshot.every_n_frames = *run_.snapshot_every;
+
+    render_.method = to_gpu(config_.render.method);
+    render_.blend = config_.render.blend;
+    render_.cube_face = config_.render.cube_face;
+    render_.depth = config_.render.depth;
+    render_.cache_bytes = static_cast<std::size_t>(config_.render.view_cache_mb) << 20;
+
+    selection_ = std::make_unique<SceneSelection>(config_.backgrounds, config_.lightings);
+    const CatalogueOptions catalogue = catalogue_options(config_);
+    auto startup = load_startup_catalogue(catalogue);
+    if (startup) {
+        log_info("catalogue '" + startup.value().name + "' with " +
+                 std::to_string(startup.value().stones.size()) + " stones from " +
+                 startup.value().directory.string());
+        selection_->set_catalogue(startup.value());
+        catalogue_ = std::move(startup).value();
+    } else {
+        // The kiosk still runs: it shows its background and takes the first valid catalogue
+        // staff deliver.
+        log_error("no catalogue to show: " + startup.error());
+    }
+    auto watcher = CatalogueWatcher::start(catalogue);
+    if (watcher) {
+        watcher_ = std::move(watcher).value();
+    } else {
+        log_error("new catalogues will not be picked up: " + watcher.error());
+    }
+
+    if (config_.display.backend == "drm") {
+        seat_ = Seat::open();
+        // Switched to another VT, the kiosk cannot show frames; the watchdog then follows the
+        // loop's liveness instead of frame progress, so systemd does not restart a kiosk that
+        // is merely in the background.
+        seat_->add_listener({[this] { notifier_.set_frames_expected(false); },
+                             [this] { notifier_.set_frames_expected(display_ != nullptr); }});
+    }
+    if (!run_.replay.empty()) {
+        EvemuReplayOptions replay;
+        replay.events_path = run_.replay;
+        replay.description_path = run_.replay_description;
+        replay.loop = run_.replay_loop;
+        auto opened = EvemuReplay::open(replay);
+        if (!opened) return Error{opened.error()};
+        log_info("replaying " + run_.replay + " (" + opened.value().device_name() + ", " +
+                 std::to_string(opened.value().event_count()) + " events)");
+        replay_.emplace(std::move(opened).value());
+    } else if (seat_) {
+        std::shared_ptr<Seat> seat = seat_;
+        input_ = std::make_unique<InputManager>(
+            config_.input,
+            [seat](const std::string& path) {
+                const int fd = seat->open(path);
+                return fd >= 0 ? fd : -errno;
+            },
+            [seat](int fd) { seat->close(fd); });
+    } else {
+        input_ = std::make_unique<InputManager>(config_.input);
+    }
+    gestures_ = std::make_unique<GestureController>(config_.gestures, kStartView);
+    try_open_display(monotonic_now_s());
+    return true;
+}
+
+void KioskSession::try_open_display(double now_s) {
+    auto opened = open_display(config_.display, seat_);
+    if (!opened) {
+        // Said once at error level; the retries every few seconds stay quiet until it works.
+        if (!display_failure_logged_) {
+            log_error(opened.error() + "; trying again every " +
+                      std::to_string(static_cast<int>(kDisplayRetryS)) + " s");
+        }
+        display_failure_logged_ = true;
+        next_display_try_s_ = now_s + kDisplayRetryS;
+        notifier_.set_frames_expected(false);
+        return;
+    }
+    display_ = std::move(opened).value();
+    log_info("display: " + display_->describe() + " on " + display_->context().description());
+    auto made = make_gpu_objects();
+    if (!made) {
+        log_error(made.error());
+        display_.reset();
+        next_display_try_s_ = now_s + kDisplayRetryS;
+        return;
+    }
+    const glm::ivec2 size = display_->picture_size();
+    auto rotation =
+        touch_rotation_from_options(config_.input.rotation_deg, display_->rotation_deg());
+    if (!rotation) log_error(rotation.error());
+    const TouchMapping mapping(config_.input.calibration, rotation ? rotation.value() : 0,
+                               glm::dvec2(size));
+    if (input_) input_->set_mapping(mapping);
+    if (replay_) replay_->set_mapping(mapping);
+    gestures_->set_picture_size(glm::dvec2(size));
+    scene_stale_ = true;
+    notifier_.set_frames_expected(true);
+}
+
+Result<bool> KioskSession::make_gpu_objects() {
+    const glm::ivec2 size = display_->picture_size();
+    auto picture = gpu::RenderTarget::make(size.x, size.y);
+    if (!picture) return Error{"picture: " + picture.error()};
+    picture_.emplace(std::move(picture).value());
+    auto fade = CrossFade::make(size.x, size.y);
+    if (!fade) return Error{"cross-fade: " + fade.error()};
+    crossfade_.emplace(std::move(fade).value());
+    return true;
+}
+
+std::vector<int> KioskSession::poll_fds() const {
+    std::vector<int> fds;
+    if (display_ && display_->event_fd() >= 0) fds.push_back(display_->event_fd());
+    if (input_) fds.push_back(input_->fd());
+    if (watcher_) fds.push_back(watcher_->event_fd());
+    return fds;
+}
+
+double KioskSession::next_deadline_s(double now_s) const {
+    double next = std::numeric_limits<double>::infinity();
+    if (!display_) next = std::min(next, next_display_try_s_);
+    if (display_ && display_->timeout_ms() >= 0) {
+        next = std::min(next, now_s + display_->timeout_ms() / 1000.0);
+    }
+    if (replay_) next = std::min(next, replay_->next_due_s());
+    next = std::min(next, notifier_.next_ping_s(now_s));
+    return next;
+}
+
+bool KioskSession::display_ready() const {
+    return display_ && display_->ready();
+}
+
+void KioskSession::dispatch(double now_s) {
+    if (!display_ && now_s >= next_display_try_s_) try_open_display(now_s);
+    if (display_) display_->dispatch();
+    std::vector<InputEvent> events;
+    if (input_) events = input_->dispatch(now_s);
+    if (replay_) events = replay_->poll(now_s);
+    for (const InputEvent& event : events) {
+        const double t = std::visit([](const auto& e) { return e.time_s; }, event);
+        if (oldest_unshown_input_s_ < 0.0) oldest_unshown_input_s_ = t;
+        last_input_s_ = t;
+        gestures_->on_event(event);
+    }
+    if (watcher_) {
+        if (auto incoming = watcher_->take_switch()) switch_catalogue(std::move(*incoming), now_s);
+    }
+}
+
+void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
+    log_notice("showing catalogue '" + catalogue.name + "' (" +
+               std::to_string(catalogue.stones.size()) + " stones) from " +
+               catalogue.directory.string());
+    if (picture_ && crossfade_ && first_frame_shown_) {
+        crossfade_->hold(*picture_, now_s, config_.crossfade_s);
+    }
+    selection_->set_catalogue(catalogue);
+    catalogue_ = std::move(catalogue);
+    scene_stale_ = true;
+}
+
+void KioskSession::rescan_catalogues() {
+    log_info("rescanning the catalogue inbox (SIGHUP)");
+    if (watcher_) watcher_->rescan();
+}
+
+void KioskSession::apply_actions(double now_s) {
+    for (GestureAction action : gestures_->take_actions()) {
+        if (!selection_->has_stone() && action == GestureAction::next_stone) continue;
+        if (picture_ && crossfade_ && first_frame_shown_) {
+            crossfade_->hold(*picture_, now_s, config_.crossfade_s);
+        }
+        if (action == GestureAction::next_stone) selection_->next_stone();
+        if (action == GestureAction::next_preset) selection_->next_preset();
+        scene_stale_ = true;
+        log_info("now " + selection_->describe());
+    }
+}
+
+void KioskSession::rebuild_scene(double now_s) {
+    (void)now_s;
+    scene_stale_ = false;
+    scene_.reset();  // the old scene's GL objects go before the new one's are made
+    if (!selection_->has_stone()) return;
+    auto made = StoneScene::make(selection_->stone(), selection_->look(), render_);
+    if (!made) {
+        log_error(made.error());
+        return;
+    }
+    scene_ = std::move(made).value();
+    gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
+}
+
+double KioskSession::draw_stone(double now_s, FrameRecord& record) {
+    const glm::ivec2 size = display_->picture_size();
+    const ViewState view = gestures_->view();
+    CameraSettings settings;
+    settings.azimuth_deg = view.azimuth_deg;
+    settings.elevation_deg = view.elevation_deg;
+    settings.roll_deg = view.roll_deg;
+    settings.zoom = view.zoom;
+    gpu::FrameRenderer& renderer = scene_->renderer();
+    auto camera = Camera::make(settings, renderer.scene_radius_mm(), size.x, size.y);
+    if (!camera) {
+        log_error("camera: " + camera.error());
+        return 0.0;
+    }
+    if (gpu::TableMethod* table = renderer.table()) {
+        // The view direction's rotation since the last frame, as an angular velocity, lets the
+        // cache decode the views the turn will reach before it reaches them.
+        const glm::dvec3 forward = camera.value().forward();
+        glm::dvec3 omega(0.0);
+        if (last_forward_s_ >= 0.0 && now_s > last_forward_s_) {
+            omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
+        }
+        last_forward_ = forward;
+        last_forward_s_ = now_s;
+        table->cache().prefetch(
+            -forward, omega,
+            table->level_for(table->database().camera().field_mm / camera.value().pixel_size()));
+    }
+    // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
+    auto stats = renderer.render(camera.value(), config_.display.backend != "drm");
+    if (!stats) {
+        log_error(stats.error());
+        return 0.0;
+    }
+    const gpu::TableFrameStats& t = stats.value().table;
+    record.streaming_ms = t.acquire_ms + t.upload_ms + t.wait_ms;
+    return stats.value().cpu_ms;
+}
+
+Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
+    if (!display_ || !picture_) return std::optional<FrameRecord>{};
+    gestures_->advance(now_s);
+    apply_actions(now_s);
+    if (scene_stale_) rebuild_scene(now_s);
+
+    FrameRecord record;
+    record.start_s = monotonic_now_s();
+    picture_->bind();
+    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    if (scene_) draw_stone(now_s, record);
+    auto faded = crossfade_->draw(*picture_, now_s);
+    if (!faded) return Error{faded.error()};
+    auto presented = display_->present(*picture_);
+    if (!presented) return Error{"display: " + presented.error()};
+    const double done_s = monotonic_now_s();
+    record.draw_ms = (done_s - record.start_s) * 1000.0;
+    if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
+    if (oldest_unshown_input_s_ >= 0.0) {
+        record.latency_ms = (done_s - oldest_unshown_input_s_) * 1000.0;
+        oldest_unshown_input_s_ = -1.0;
+    }
+    last_present_s_ = done_s;
+    ++frame_number_;
+    notifier_.frame_presented(done_s);
+
+    if (!first_frame_shown_) {
+        first_frame_shown_ = true;
+        char line[160];
+        std::snprintf(line, sizeof line, "first frame on screen %.2f s after the process started",
+                      seconds_since_process_start());
+        log_info(line);
+        notifier_.ready("showing " + selection_->describe());
+        // A replay starts once the kiosk is on screen, so start-up never eats its first
+        // gestures.
+        if (replay_) replay_->start(done_s);
+    }
+    const int every = config_.snapshot.every_n_frames;
+    if (every > 0 && frame_number_ % every == 0) {
+        char name[32];
+        std::snprintf(name, sizeof name, "frame-%06ld.png", frame_number_);
+        write_snapshot_file(name);
+    }
+    if (snapshot_requested_) {
+        snapshot_requested_ = false;
+        write_snapshot_file("snapshot.png");
+    }
+    return std::optional<FrameRecord>(record);
+}
+
+void KioskSession::write_snapshot_file(const std::string& name) {
+    auto written = write_snapshot(*picture_, config_.snapshot.dir / name);
+    if (!written) {
+        log_error(written.error());
+    } else {
+        log_debug("snapshot " + (config_.snapshot.dir / name).string());
+    }
+}
+
+void KioskSession::tick(double now_s) {
+    notifier_.tick(now_s);
+}
+
+bool KioskSession::replay_settled(double now_s) const {
+    if (!replay_ || !replay_->finished() || !first_frame_shown_) return false;
+    // The last event is long enough ago for a fling's spin to have died away (eight half-lives
+    // leave under 0.4 %), and a frame has been drawn since.
+    const double rest_s = 8.0 * config_.gestures.inertia_half_life_s;
+    return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s;
+}
+
+void KioskSession::finish() {
+    notifier_.stopping();
+    const ViewState v = gestures_->view();
+    char line[160];
+    std::snprintf(
+        line, sizeof line, "last view: azimuth %.2f°, elevation %.2f°, roll %.2f°, zoom %.3f; %s",
+        v.azimuth_deg, v.elevation_deg, v.roll_deg, v.zoom, selection_->describe().c_str());
+    log_info(line);
+    if (run_.snapshot_last && picture_) write_snapshot_file("last.png");
+    scene_.reset();
+    display_.reset();  // restores the mode the screen had before the kiosk
+}
+
+}  // namespace gem::kiosk

@@ -1,0 +1,98 @@
+#pragma once
+// Everything one kiosk run holds, and what the main loop asks of it each time round: the
+// config, the display (reopened every few seconds while it is missing), the input devices or
+// a replay, the gestures, the catalogue on screen and the one arriving, the scene drawn, the
+// cross-fade, snapshots and systemd notification. kiosk_loop.cpp owns the loop itself.
+
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "app/crossfade.hpp"
+#include "app/frame_stats.hpp"
+#include "app/kiosk_run.hpp"
+#include "app/scene_selection.hpp"
+#include "app/stone_scene.hpp"
+#include "catalogue/catalogue_watcher.hpp"
+#include "display/display.hpp"
+#include "display/seat.hpp"
+#include "gestures/gesture_controller.hpp"
+#include "input/evemu_replay.hpp"
+#include "input/input_manager.hpp"
+#include "service/service_notifier.hpp"
+#include "settings/kiosk_config.hpp"
+#include "util/result.hpp"
+
+namespace gem::kiosk {
+
+class KioskSession {
+  public:
+    static Result<std::unique_ptr<KioskSession>> make(const KioskRun& run);
+    ~KioskSession();
+
+    std::vector<int> poll_fds() const;
+    // The next time dispatch() must run even if no descriptor becomes readable.
+    double next_deadline_s(double now_s) const;
+    bool display_ready() const;
+
+    // Reads input, page-flip and catalogue events; opens a missing display when it is time.
+    void dispatch(double now_s);
+    // Draws and presents one frame; nothing when there is nothing to draw on.
+    Result<std::optional<FrameRecord>> draw_frame(double now_s);
+    // Watchdog pings and snapshots requested from outside.
+    void tick(double now_s);
+
+    void rescan_catalogues();
+    void request_snapshot() { snapshot_requested_ = true; }
+    double seconds_running(double now_s) const { return now_s - started_s_; }
+    // The replay has played every event and the view has come to rest.
+    bool replay_settled(double now_s) const;
+    // Leaves the screen as it found it and tells systemd the kiosk is stopping.
+    void finish();
+
+  private:
+    explicit KioskSession(const KioskRun& run) : run_(run) {}
+    Result<bool> configure();
+    void try_open_display(double now_s);
+    Result<bool> make_gpu_objects();
+    void switch_catalogue(Catalogue catalogue, double now_s);
+    void rebuild_scene(double now_s);
+    void apply_actions(double now_s);
+    void write_snapshot_file(const std::string& name);
+    double draw_stone(double now_s, FrameRecord& record);
+
+    KioskRun run_;
+    KioskConfig config_;
+    double started_s_ = 0.0;
+    std::shared_ptr<Seat> seat_;
+    std::unique_ptr<Display> display_;
+    double next_display_try_s_ = 0.0;
+    bool display_failure_logged_ = false;
+    std::optional<gpu::RenderTarget> picture_;
+    std::optional<CrossFade> crossfade_;
+
+    std::unique_ptr<InputManager> input_;
+    std::optional<EvemuReplay> replay_;
+    std::unique_ptr<GestureController> gestures_;
+    std::vector<InputEvent> pending_input_;
+    double oldest_unshown_input_s_ = -1.0;
+    double last_input_s_ = -1.0;
+
+    std::unique_ptr<CatalogueWatcher> watcher_;
+    std::optional<Catalogue> catalogue_;
+    std::unique_ptr<SceneSelection> selection_;
+    std::unique_ptr<StoneScene> scene_;
+    bool scene_stale_ = true;
+    RenderChoice render_;
+
+    ServiceNotifier notifier_;
+    bool first_frame_shown_ = false;
+    long frame_number_ = 0;
+    double last_present_s_ = -1.0;
+    bool snapshot_requested_ = false;
+    glm::dvec3 last_forward_{0.0};
+    double last_forward_s_ = -1.0;
+};
+
+}  // namespace gem::kiosk

@@ -1,0 +1,93 @@
+#include "app/stone_scene.hpp"
+
+#include <numbers>
+
+#include "tables/reader.hpp"
+
+namespace gem::kiosk {
+
+namespace {
+
+Result<Environment> make_environment(const LookChoice& look) {
+    Environment environment = Environment::studio();
+    switch (look.background) {
+        case LookChoice::Background::uniform:
+            environment = Environment::uniform(look.colour);
+            break;
+        case LookChoice::Background::image: {
+            auto loaded = Environment::load_image(look.image);
+            if (!loaded) return Error{loaded.error()};
+            environment = std::move(loaded).value();
+            break;
+        }
+        case LookChoice::Background::studio:
+        case LookChoice::Background::colour:
+            break;
+    }
+    return environment.with_intensity(look.environment_intensity);
+}
+
+Result<gpu::RingMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
+    if (stone.ring == RingKind::obj && stone.ring_mesh) return *stone.ring_mesh;
+    if (stone.ring == RingKind::obj) {
+        return gpu::load_ring_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+    }
+    gpu::RingParams params;
+    params.metal = stone.metal;
+    return gpu::make_ring(params, geometry);
+}
+
+}  // namespace
+
+Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone,
+                                                     const LookChoice& look,
+                                                     const RenderChoice& render) {
+    auto fail = [&](const std::string& why) { return Error{"stone '" + stone.name + "': " + why}; };
+    std::unique_ptr<StoneScene> scene(new StoneScene());
+    scene->name_ = stone.name;
+    // Validation mapped and checked the database; a stone without one (a test's hand-made
+    // catalogue) is opened here.
+    scene->database_ = stone.opened;
+    if (!scene->database_) {
+        auto database = Database::open(stone.database);
+        if (!database) return fail(database.error());
+        scene->database_ = std::make_shared<const Database>(std::move(database).value());
+    }
+    const double to_deg = 180.0 / std::numbers::pi;
+    scene->min_elevation_deg_ = scene->database_->params().grid.min_elevation_rad * to_deg;
+    scene->max_elevation_deg_ = 90.0;
+
+    auto environment = make_environment(look);
+    if (!environment) return fail(environment.error());
+    scene->environment_ = std::move(environment).value();
+
+    gpu::FrameSetup setup;
+    setup.method = render.method;
+    setup.database = scene->database_;
+    setup.stone = scene->database_->stone();
+    setup.material = scene->database_->material();
+    if (stone.colour) setup.material.body_colour = *stone.colour;
+    if (stone.absorption_per_mm) setup.material.absorption_per_mm = *stone.absorption_per_mm;
+    setup.shading.lights = look.lights;
+    setup.trace.max_depth = render.depth;
+    setup.table.blend = render.blend;
+    setup.table.cache.memory_bytes = render.cache_bytes;
+    setup.table.wait_for_views = render.wait_for_views;
+    setup.environment = &scene->environment_;
+    setup.cube_face = render.cube_face;
+    if (look.background == LookChoice::Background::colour) {
+        setup.background_colour = glm::vec3(look.colour * look.background_intensity);
+    }
+    if (stone.ring != RingKind::none) {
+        auto ring = make_ring(stone, scene->database_->stone());
+        if (!ring) return fail(ring.error());
+        scene->ring_ = std::move(ring).value();
+        setup.ring = &scene->ring_;
+    }
+    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    if (!renderer) return fail(renderer.error());
+    scene->renderer_.emplace(std::move(renderer).value());
+    return scene;
+}
+
+}  // namespace gem::kiosk

@@ -1,0 +1,69 @@
+#pragma once
+// What the kiosk shows at one moment, assembled for the GPU: one catalogue stone (its ray-table
+// database, its ring, its colour) under one background preset and one lighting preset, drawn
+// with the configured method. A new stone or background makes a new StoneScene (the
+// environment cube and the ring's cube faces are built once per scene); a new lighting preset
+// only changes the lights (and the environment level, which needs a new scene too).
+
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "catalogue/catalogue.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "gpu/ring_mesh.hpp"
+#include "render/environment.hpp"
+#include "render/lights.hpp"
+#include "util/result.hpp"
+
+namespace gem::kiosk {
+
+struct LookChoice {
+    // Background: the studio, a uniform surround, an equirectangular image, or a flat colour
+    // behind a studio-lit stone.
+    enum class Background { studio, uniform, image, colour } background = Background::studio;
+    glm::dvec3 colour{0.05};
+    std::filesystem::path image;
+    double background_intensity = 1.0;
+    std::vector<Light> lights;
+    double environment_intensity = 1.0;
+};
+
+struct RenderChoice {
+    gpu::Method method = gpu::Method::table;
+    bool blend = false;
+    int cube_face = 256;
+    int depth = 8;  // trace: internal segments followed
+    std::size_t cache_bytes = std::size_t{256} << 20;
+    bool wait_for_views = false;  // a single still (tests, snapshots) waits for exact views
+};
+
+class StoneScene {
+  public:
+    // Errors name the stone, and the file or setting that failed.
+    static Result<std::unique_ptr<StoneScene>> make(const CatalogueStone& stone,
+                                                    const LookChoice& look,
+                                                    const RenderChoice& render);
+
+    gpu::FrameRenderer& renderer() { return renderer_.value(); }
+    const std::string& name() const { return name_; }
+    // The band of elevations the stone's database holds (the gestures keep the view inside).
+    double min_elevation_deg() const { return min_elevation_deg_; }
+    double max_elevation_deg() const { return max_elevation_deg_; }
+
+  private:
+    StoneScene() = default;
+    std::string name_;
+    std::shared_ptr<const Database> database_;
+    Environment environment_ = Environment::studio();
+    gpu::RingMesh ring_;
+    std::optional<gpu::FrameRenderer> renderer_;
+    double min_elevation_deg_ = -90.0;
+    double max_elevation_deg_ = 90.0;
+};
+
+}  // namespace gem::kiosk

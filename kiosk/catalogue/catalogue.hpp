@@ -1,0 +1,65 @@
+#pragma once
+// A catalogue: the stones a kiosk shows, as staff deliver them in a directory holding
+// catalogue.toml (the manifest, manifest.hpp) and the files it names. A Catalogue from
+// validate_catalogue (validate.hpp) holds the very databases it checked, already mapped, so the
+// render loop never opens or trusts a file itself.
+
+#include <chrono>
+#include <filesystem>
+#include <memory>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "gpu/ring_mesh.hpp"
+#include "tables/reader.hpp"
+
+namespace gem::kiosk {
+
+struct CatalogueOptions {
+    // Staff drop catalogue directories here (systemd/ makes it writable for them).
+    std::filesystem::path inbox_dir = "/var/lib/gemkiosk/inbox";
+    // Further places to look, such as a USB stick's mount point; one that does not exist yet
+    // is looked at again when the mount table changes or on rescan().
+    std::vector<std::filesystem::path> extra_dirs;
+    // The kiosk's state directory (config [catalogue] state_dir): installed copies in
+    // state/catalogues/<name>-<n> and the symlink state/current (catalogue_store.hpp).
+    std::filesystem::path state_dir = "/var/lib/gemkiosk";
+    // The catalogue shipped with the kiosk, used when state/current is missing or damaged.
+    std::filesystem::path default_catalogue = "/usr/share/gemkiosk/catalogue";
+    // A directory is considered only once no file in it has changed size or mtime for this
+    // long: a copy in progress (cp, a file manager, rsync) keeps changing them.
+    std::chrono::milliseconds settle_time{5000};
+};
+
+enum class RingKind {
+    parametric,  // made to fit the stone (gpu::make_ring)
+    none,        // a loose stone
+    obj,         // a Wavefront OBJ in the stone frame (gpu::load_ring_obj)
+};
+
+struct CatalogueStone {
+    std::string name;                        // shown to staff in logs
+    std::filesystem::path database;          // absolute, inside the catalogue directory
+    std::shared_ptr<const Database> opened;  // the mapping validation checked
+    RingKind ring = RingKind::parametric;
+    std::filesystem::path ring_obj;                  // RingKind::obj: absolute path
+    std::shared_ptr<const gpu::RingMesh> ring_mesh;  // RingKind::obj: the mesh loaded
+    gpu::RingParams::Metal metal = gpu::RingParams::Metal::yellow_gold;
+    // Shading-time material overrides (the database records the defaults).
+    std::optional<glm::dvec3> colour;
+    std::optional<glm::dvec3> absorption_per_mm;
+    // Preset names resolved by the settings module; empty: the kiosk's default.
+    std::string background;
+    std::string lighting;
+};
+
+struct Catalogue {
+    std::string name;
+    std::filesystem::path directory;  // canonical: an installed copy, never the symlink
+    std::vector<CatalogueStone> stones;
+};
+
+}  // namespace gem::kiosk

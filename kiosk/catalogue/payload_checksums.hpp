@@ -1,0 +1,18 @@
+#pragma once
+// Checks the stored xxHash64 of every view's compressed payload (docs/gemdb-format.md), as the
+// first part of `gemtables verify` does, but without decompressing: Database::open checks the
+// header, sections and index, and only decode() checks a payload, too late for a catalogue
+// that must be refused before it goes on screen.
+
+#include <optional>
+#include <string>
+
+#include "tables/reader.hpp"
+
+namespace gem::kiosk {
+
+// The first damaged payload as "view V level L: checksum mismatch", or nothing when every
+// payload is intact. Reads the file the database was opened from, with pread(2).
+std::optional<std::string> find_damaged_payload(const Database& database);
+
+}  // namespace gem::kiosk

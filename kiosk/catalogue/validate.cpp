@@ -1,0 +1,59 @@
+#include "catalogue/validate.hpp"
+
+#include <system_error>
+
+#include "catalogue/manifest.hpp"
+#include "catalogue/payload_checksums.hpp"
+
+namespace gem::kiosk {
+
+namespace {
+
+// The engine's messages start with the absolute path; staff know the catalogue's own names.
+std::string relative_message(const std::string& message, const std::filesystem::path& file,
+                             const std::filesystem::path& dir) {
+    const std::string absolute = file.string();
+    const std::string relative = file.lexically_relative(dir).string();
+    if (message.rfind(absolute, 0) == 0) return relative + message.substr(absolute.size());
+    return relative + ": " + message;
+}
+
+}  // namespace
+
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir) {
+    return validate_catalogue(dir, std::stop_token{});
+}
+
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop_token stop) {
+    std::string label = dir.filename().string();
+    auto reject = [&](const std::string& fault) {
+        return Error{"catalogue '" + label + "' rejected: " + fault};
+    };
+    std::error_code ec;
+    const std::filesystem::path real = std::filesystem::canonical(dir, ec);
+    if (ec) return reject(dir.string() + ": " + ec.message());
+    if (!std::filesystem::is_directory(real, ec)) return reject(dir.string() + ": not a directory");
+
+    Result<Catalogue> manifest = read_manifest(real);
+    if (!manifest) return reject(manifest.error());
+    Catalogue catalogue = std::move(manifest).value();
+    label = catalogue.name;
+    for (CatalogueStone& stone : catalogue.stones) {
+        if (stop.stop_requested()) return reject("validation stopped (shutting down)");
+        Result<Database> opened = Database::open(stone.database);
+        if (!opened) return reject(relative_message(opened.error(), stone.database, real));
+        if (auto damaged = find_damaged_payload(opened.value())) {
+            return reject(stone.database.lexically_relative(real).string() + ": " + *damaged);
+        }
+        stone.opened = std::make_shared<const Database>(std::move(opened).value());
+        if (stone.ring == RingKind::obj) {
+            Result<gpu::RingMesh> mesh =
+                gpu::load_ring_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+            if (!mesh) return reject(relative_message(mesh.error(), stone.ring_obj, real));
+            stone.ring_mesh = std::make_shared<const gpu::RingMesh>(std::move(mesh).value());
+        }
+    }
+    return catalogue;
+}
+
+}  // namespace gem::kiosk

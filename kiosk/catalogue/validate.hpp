@@ -1,0 +1,22 @@
+#pragma once
+// Whether a catalogue directory may go on screen: the manifest parses, there is at least one
+// stone, every database opens (header, section and index checksums) and every stored view's
+// payload checksum verifies, and every OBJ ring loads. Every fault is one line naming the
+// catalogue, the file (relative to the directory) and the fault, e.g.
+//   catalogue 'spring' rejected: stones/ruby.gemdb: view 12 level 0: checksum mismatch
+
+#include <filesystem>
+#include <stop_token>
+
+#include "catalogue/catalogue.hpp"
+#include "util/result.hpp"
+
+namespace gem::kiosk {
+
+// `dir` may be a symlink (state/current): the Catalogue names the directory it resolves to,
+// and holds the databases and meshes it checked.
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir);
+// The same, giving up between files once `stop` is requested (the watcher's shutdown).
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop_token stop);
+
+}  // namespace gem::kiosk

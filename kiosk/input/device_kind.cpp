@@ -1,0 +1,44 @@
+#include "input/device_kind.hpp"
+
+#include <algorithm>
+
+namespace gem::kiosk {
+
+DeviceKind classify(const DeviceCapabilities& c) {
+    const bool absolute = c.mt_position || c.abs_xy;
+    if (absolute && (c.direct || c.btn_touch)) return DeviceKind::touchscreen;
+    if (c.rel_xy && c.btn_left) return DeviceKind::pointer;
+    if (c.typing_keys) return DeviceKind::keyboard;
+    return DeviceKind::other;
+}
+
+std::string_view to_string(DeviceKind kind) {
+    switch (kind) {
+        case DeviceKind::touchscreen:
+            return "touchscreen";
+        case DeviceKind::pointer:
+            return "pointer";
+        case DeviceKind::keyboard:
+            return "keyboard";
+        case DeviceKind::other:
+            break;
+    }
+    return "other";
+}
+
+TouchAxes touch_axes(const DeviceCapabilities& c) {
+    TouchAxes axes;
+    if (c.mt_position) {
+        axes.protocol = c.mt_slot ? TouchProtocol::multitouch_b : TouchProtocol::multitouch_a;
+        axes.x = c.mt_x;
+        axes.y = c.mt_y;
+        axes.slot_count = c.mt_slot ? std::max(1, c.slot_maximum + 1) : 1;
+    } else {
+        axes.protocol = TouchProtocol::single_touch;
+        axes.x = c.abs_x;
+        axes.y = c.abs_y;
+    }
+    return axes;
+}
+
+}  // namespace gem::kiosk

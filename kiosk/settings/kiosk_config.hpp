@@ -1,0 +1,85 @@
+#pragma once
+// The kiosk's one configuration file (config/gemkiosk.toml, installed as
+// /etc/gemkiosk/gemkiosk.toml), read with toml++. Every key has a default, so an empty or
+// missing file gives a working kiosk. A bad value or an unknown key is reported and that key
+// keeps its default; a file that is not valid TOML is reported once and the whole file is set
+// aside. Each error names the file, the line and the key:
+//   gemkiosk.toml:12: display.rotation: expected one of 0, 90, 180, 270
+
+#include <filesystem>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "display/display_options.hpp"
+#include "gestures/gesture_options.hpp"
+#include "input/input_options.hpp"
+#include "service/log.hpp"
+#include "settings/presets.hpp"
+
+namespace gem::kiosk {
+
+inline constexpr const char* kDefaultConfigFile = "/etc/gemkiosk/gemkiosk.toml";
+
+// [render]: how the stone is shaded (DESIGN.md, "Methods side by side").
+enum class RenderMethod { table, trace, phong };
+const char* to_string(RenderMethod method);
+
+struct RenderConfig {
+    RenderMethod method = RenderMethod::table;
+    bool blend = false;        // table: blend the two nearest stored views, else the nearest
+    int cube_face = 256;       // virtual-cube face size, texels
+    int depth = 8;             // trace: internal ray segments followed per branch
+    int view_cache_mb = 256;   // table: memory for decoded views
+    double frame_rate_hz = 0;  // frames drawn per second at most; 0: every refresh
+};
+
+// [catalogue]: where catalogues live and arrive (the main program hands these to the catalogue
+// module's own CatalogueOptions, catalogue/catalogue.hpp).
+struct CatalogueConfig {
+    // The catalogue shipped with the kiosk, shown until staff install one (and whenever the
+    // installed one, state_dir/current, is missing or damaged).
+    std::filesystem::path default_dir = "/usr/share/gemkiosk/catalogue";
+    std::filesystem::path state_dir = "/var/lib/gemkiosk";        // kiosk's own state
+    std::filesystem::path inbox_dir = "/var/lib/gemkiosk/inbox";  // new catalogues land here
+    std::vector<std::filesystem::path> watch_dirs;  // also watched, e.g. a USB stick's mount
+    double settle_s = 5.0;  // a new catalogue is read once its files stop changing this long
+};
+
+// [snapshot]: PNG pictures of the screen (CI, remote support).
+struct SnapshotConfig {
+    std::filesystem::path dir = "/var/lib/gemkiosk/snapshots";
+    int every_n_frames = 0;  // headless: a snapshot every n-th frame; 0: none
+};
+
+struct KioskConfig {
+    DisplayOptions display;
+    InputOptions input;
+    GestureOptions gestures;  // [gestures] and [attract]
+    RenderConfig render;
+    CatalogueConfig catalogue;
+    SnapshotConfig snapshot;
+    std::vector<BackgroundPreset> backgrounds = default_backgrounds();
+    std::vector<LightingPreset> lightings = default_lightings();
+    LogLevel log_level = LogLevel::info;
+    double crossfade_s = 0.4;  // cross-fade when a preset or stone changes; 0: a cut
+};
+
+struct ConfigLoad {
+    KioskConfig config;
+    std::vector<std::string> errors;  // in the order of the file's lines
+};
+
+// Reads `file`; relative paths in it are taken relative to the file's folder.
+ConfigLoad load_config(const std::filesystem::path& file);
+// The same from text: `name` is the file name errors carry, `base_dir` resolves relative paths.
+ConfigLoad parse_config(std::string_view text, std::string_view name,
+                        const std::filesystem::path& base_dir);
+// Logs each error of `load` (log_error), so a kiosk's journal shows every bad line.
+void log_config_errors(const ConfigLoad& load);
+
+// Every key the loader reads, dotted from the top of the file ("display.rotation",
+// "lighting.light.colour"); the listing comes from the same tables the loader dispatches on.
+std::vector<std::string> known_config_keys();
+
+}  // namespace gem::kiosk

@@ -1,0 +1,45 @@
+// FrameStats: quantiles by nearest rank and the summary's frame rate, checked against hand
+// calculations.
+#include <gtest/gtest.h>
+
+#include "app/frame_stats.hpp"
+
+namespace gem::kiosk {
+namespace {
+
+TEST(FrameStats, QuantileIsTheNearestRank) {
+    // Nearest rank: the ceil(p n)-th smallest. For 1..10: p50 -> 5th = 5, p90 -> 9th = 9,
+    // p99 -> ceil(9.9) = 10th = 10, p0 -> the smallest.
+    std::vector<double> v{7, 3, 10, 1, 9, 2, 8, 4, 6, 5};
+    EXPECT_EQ(quantile(v, 0.5), 5.0);
+    EXPECT_EQ(quantile(v, 0.9), 9.0);
+    EXPECT_EQ(quantile(v, 0.99), 10.0);
+    EXPECT_EQ(quantile(v, 0.0), 1.0);
+    EXPECT_EQ(quantile({}, 0.5), 0.0);
+}
+
+TEST(FrameStats, SummaryCountsFramesOverTheirSpan) {
+    FrameStats stats;
+    // Four frames starting every 0.5 s, each 100 ms: from 0 to 1.6 s, so 4 / 1.6 = 2.50 frames/s.
+    for (int i = 0; i < 4; ++i) {
+        stats.add({.start_s = 0.5 * i,
+                   .draw_ms = 100.0,
+                   .interval_ms = i ? 500.0 : 0.0,
+                   .latency_ms = i == 2 ? 42.0 : -1.0});
+    }
+    const std::string s = stats.summary();
+    EXPECT_NE(s.find("4 frames in 1.6 s: 2.50 frames/s"), std::string::npos) << s;
+    EXPECT_NE(s.find("input-to-frame ms p50 42.0"), std::string::npos) << s;
+    EXPECT_NE(s.find("(1 frames with new input)"), std::string::npos) << s;
+}
+
+TEST(FrameStats, CsvToAnUnwritablePlaceIsAnError) {
+    FrameStats stats;
+    stats.add({});
+    std::string error;
+    EXPECT_FALSE(stats.write_csv("/nonexistent-dir/frames.csv", error));
+    EXPECT_NE(error.find("/nonexistent-dir/frames.csv"), std::string::npos);
+}
+
+}  // namespace
+}  // namespace gem::kiosk

@@ -1,0 +1,96 @@
+// SceneSelection: stones and presets cycle in order, a stone's own presets come with it, and
+// the look handed to the renderer combines the two presets as documented.
+#include <gtest/gtest.h>
+
+#include "app/scene_selection.hpp"
+
+namespace gem::kiosk {
+namespace {
+
+BackgroundPreset preset(const char* name, BackgroundPreset::Kind kind, glm::dvec3 colour,
+                        double intensity) {
+    BackgroundPreset p;
+    p.name = name;
+    p.kind = kind;
+    p.colour = colour;
+    p.intensity = intensity;
+    return p;
+}
+
+std::vector<BackgroundPreset> backgrounds() {
+    using K = BackgroundPreset::Kind;
+    return {preset("studio", K::studio, glm::dvec3(0.05), 1.0),
+            preset("velvet", K::colour, {0.2, 0.0, 0.1}, 0.5),
+            preset("sky", K::uniform, {0.5, 0.6, 0.9}, 2.0)};
+}
+
+std::vector<LightingPreset> lightings() {
+    LightingPreset soft{.name = "soft", .environment_intensity = 1.0, .lights = {}};
+    LightingPreset spots{.name = "spots",
+                         .environment_intensity = 0.5,
+                         .lights = {{.position = {0, 100, 50}, .colour = {3, 3, 3}}}};
+    return {soft, spots};
+}
+
+CatalogueStone stone(const char* name, const char* background = "", const char* lighting = "") {
+    CatalogueStone s;
+    s.name = name;
+    s.background = background;
+    s.lighting = lighting;
+    return s;
+}
+
+Catalogue catalogue() {
+    Catalogue c;
+    c.name = "test";
+    c.stones = {stone("a"), stone("b", "sky", "spots"), stone("c")};
+    return c;
+}
+
+TEST(SceneSelection, StonesCycleInCatalogueOrderAndBringTheirPresets) {
+    SceneSelection s(backgrounds(), lightings());
+    EXPECT_FALSE(s.has_stone());
+    s.set_catalogue(catalogue());
+    ASSERT_TRUE(s.has_stone());
+    EXPECT_EQ(s.stone().name, "a");
+    EXPECT_EQ(s.background().name, "studio");
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "b");
+    EXPECT_EQ(s.background().name, "sky");  // named by stone b
+    EXPECT_EQ(s.lighting().name, "spots");
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "c");
+    EXPECT_EQ(s.background().name, "sky");  // c names none: the presets stay
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "a");  // wraps round
+}
+
+TEST(SceneSelection, PresetsAdvanceTogetherAndWrap) {
+    SceneSelection s(backgrounds(), lightings());
+    s.next_preset();
+    EXPECT_EQ(s.background().name, "velvet");
+    EXPECT_EQ(s.lighting().name, "spots");
+    s.next_preset();
+    EXPECT_EQ(s.background().name, "sky");
+    EXPECT_EQ(s.lighting().name, "soft");  // two lightings: back to the first
+}
+
+TEST(SceneSelection, LookCombinesBackgroundAndLighting) {
+    SceneSelection s(backgrounds(), lightings());
+    s.next_preset();  // velvet (flat colour, intensity 0.5) with spots (environment 0.5)
+    LookChoice look = s.look();
+    EXPECT_EQ(look.background, LookChoice::Background::colour);
+    EXPECT_DOUBLE_EQ(look.background_intensity, 0.5);
+    // Behind a flat colour the background's intensity is the colour's alone.
+    EXPECT_DOUBLE_EQ(look.environment_intensity, 0.5);
+    ASSERT_EQ(look.lights.size(), 1u);
+    EXPECT_EQ(look.lights[0].position, glm::dvec3(0, 100, 50));
+    s.next_preset();  // sky (uniform, intensity 2) with soft (environment 1)
+    look = s.look();
+    EXPECT_EQ(look.background, LookChoice::Background::uniform);
+    EXPECT_DOUBLE_EQ(look.environment_intensity, 2.0);  // 1 × 2
+    EXPECT_TRUE(look.lights.empty());
+}
+
+}  // namespace
+}  // namespace gem::kiosk

@@ -1,0 +1,146 @@
+// The present pass on llvmpipe (EGL surfaceless): a picture with a known colour at every pixel
+// is drawn into a plain 8-bit RGBA framebuffer standing in for the GBM window surface (which
+// is XRGB8888, not sRGB), at each quarter turn. Where each pixel must land is computed
+// independently of the shader's matrix, by turning pixel indices as a sheet of paper turns;
+// the bytes must come back as stored (the sampler decodes sRGB, the shader encodes it).
+
+#include <gtest/gtest.h>
+
+#include <cstdint>
+#include <cstdlib>
+#include <vector>
+
+#include <GLES3/gl3.h>
+
+#include "display/present_pass.hpp"
+#include "gpu/egl_context.hpp"
+#include "gpu/gl_handles.hpp"
+#include "gpu/render_target.hpp"
+
+namespace gem::kiosk {
+namespace {
+
+struct Rgb {
+    int r, g, b;
+};
+
+// A plain RGBA8 colour buffer (no sRGB encoding on write), like the window surface.
+struct WindowStandIn {
+    gpu::Texture colour;
+    gpu::Framebuffer framebuffer;
+    int width, height;
+
+    WindowStandIn(int w, int h)
+        : colour(gpu::make_texture()), framebuffer(gpu::make_framebuffer()), width(w), height(h) {
+        glBindTexture(GL_TEXTURE_2D, colour.get());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA8, w, h);
+        glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour.get(),
+                               0);
+    }
+    // Pixel (x, y) with y counted down from the top.
+    std::vector<std::uint8_t> read() const {
+        std::vector<std::uint8_t> bytes(static_cast<std::size_t>(width) * height * 4);
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, framebuffer.get());
+        glPixelStorei(GL_PACK_ALIGNMENT, 1);
+        glReadPixels(0, 0, width, height, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+        return bytes;
+    }
+    const std::uint8_t* at(const std::vector<std::uint8_t>& bytes, int x, int y) const {
+        return bytes.data() + (static_cast<std::size_t>(height - 1 - y) * width + x) * 4;
+    }
+};
+
+// Stores sRGB bytes into the picture; `colour(x, y)` with y counted down from the top.
+template <class Colour>
+void fill_picture(const gpu::RenderTarget& picture, Colour colour) {
+    const int w = picture.width();
+    const int h = picture.height();
+    std::vector<std::uint8_t> bytes(static_cast<std::size_t>(w) * h * 4);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const Rgb c = colour(x, y);
+            std::uint8_t* p = bytes.data() + (static_cast<std::size_t>(h - 1 - y) * w + x) * 4;
+            p[0] = static_cast<std::uint8_t>(c.r);
+            p[1] = static_cast<std::uint8_t>(c.g);
+            p[2] = static_cast<std::uint8_t>(c.b);
+            p[3] = 255;
+        }
+    }
+    glBindTexture(GL_TEXTURE_2D, picture.colour_texture());
+    glPixelStorei(GL_UNPACK_ALIGNMENT, 1);
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, w, h, GL_RGBA, GL_UNSIGNED_BYTE, bytes.data());
+}
+
+TEST(PresentPass, EveryPixelLandsWhereTheTurnSendsItWithItsBytes) {
+    auto context = gpu::EglContext::headless();
+    ASSERT_TRUE(context) << context.error();
+    auto pass = PresentPass::make();
+    ASSERT_TRUE(pass) << pass.error();
+    const int w = 5;  // a picture that is not square, so a wrong turn cannot pass
+    const int h = 3;
+    auto picture = gpu::RenderTarget::make(w, h);
+    ASSERT_TRUE(picture) << picture.error();
+    // Distinct colours at every pixel, spread over the sRGB curve (dark values are where the
+    // linear and power segments meet).
+    auto colour = [](int x, int y) {
+        return Rgb{7 + 50 * x, 3 + 120 * y, (x * 31 + y * 97 + 200) % 256};
+    };
+    fill_picture(picture.value(), colour);
+
+    for (int rotation : {0, 90, 180, 270}) {
+        const bool quarter = rotation % 180 != 0;
+        WindowStandIn window(quarter ? h : w, quarter ? w : h);
+        ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+        auto drawn = pass.value().draw(picture.value(), rotation, {window.width, window.height});
+        ASSERT_TRUE(drawn) << drawn.error();
+        const auto bytes = window.read();
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                // Clockwise quarter turn of a w x h sheet: (x, y) -> (h - 1 - y, x).
+                int sx = x;
+                int sy = y;
+                if (rotation == 90) {
+                    sx = h - 1 - y;
+                    sy = x;
+                } else if (rotation == 180) {
+                    sx = w - 1 - x;
+                    sy = h - 1 - y;
+                } else if (rotation == 270) {
+                    sx = y;
+                    sy = w - 1 - x;
+                }
+                const std::uint8_t* p = window.at(bytes, sx, sy);
+                const Rgb expected = colour(x, y);
+                EXPECT_LE(std::abs(p[0] - expected.r), 1) << rotation << " " << x << "," << y;
+                EXPECT_LE(std::abs(p[1] - expected.g), 1) << rotation << " " << x << "," << y;
+                EXPECT_LE(std::abs(p[2] - expected.b), 1) << rotation << " " << x << "," << y;
+                EXPECT_EQ(p[3], 255);
+            }
+        }
+    }
+}
+
+TEST(PresentPass, EveryByteValueRoundTrips) {
+    auto context = gpu::EglContext::headless();
+    ASSERT_TRUE(context) << context.error();
+    auto pass = PresentPass::make();
+    ASSERT_TRUE(pass) << pass.error();
+    auto picture = gpu::RenderTarget::make(256, 1);
+    ASSERT_TRUE(picture) << picture.error();
+    fill_picture(picture.value(), [](int x, int) { return Rgb{x, 255 - x, (x * 7) % 256}; });
+    WindowStandIn window(256, 1);
+    ASSERT_TRUE(pass.value().draw(picture.value(), 0, {256, 1}));
+    const auto bytes = window.read();
+    int worst = 0;
+    for (int x = 0; x < 256; ++x) {
+        const std::uint8_t* p = window.at(bytes, x, 0);
+        worst = std::max({worst, std::abs(p[0] - x), std::abs(p[1] - (255 - x)),
+                          std::abs(p[2] - (x * 7) % 256)});
+    }
+    EXPECT_LE(worst, 1);
+    RecordProperty("worst_byte_error", worst);
+}
+
+}  // namespace
+}  // namespace gem::kiosk

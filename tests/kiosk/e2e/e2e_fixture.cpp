@@ -1,0 +1,209 @@
+#include "e2e_fixture.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <fstream>
+#include <map>
+#include <memory>
+#include <sstream>
+
+#include "app/scene_selection.hpp"
+#include "app/stone_scene.hpp"
+#include "catalogue/validate.hpp"
+#include "gpu/egl_context.hpp"
+#include "gpu/render_target.hpp"
+#include "kiosk_process.hpp"
+#include "render/camera.hpp"
+#include "settings/kiosk_config.hpp"
+
+namespace gem::kiosk_e2e {
+
+namespace fs = std::filesystem;
+
+fs::path fresh_dir(const std::string& name) {
+    const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / name;
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    return dir;
+}
+
+Result<fs::path> test_catalogue(const std::string& stone) {
+    const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "catalogues" / stone;
+    const fs::path database = dir / (stone + ".gemdb");
+    fs::create_directories(dir);
+    if (!fs::exists(database)) {
+        // gemtables writes beside and renames, so tests running at once never see half a file.
+        const Finished built =
+            run_kiosk({GEMTABLES_PATH, "build",
+                       std::string(GEM_SOURCE_DIR) + "/config/stones/" + stone + ".toml", "-o",
+                       database.string(), "--levels", "64,128", "--spacing", "10", "--depth", "6"},
+                      std::chrono::seconds(300));
+        if (built.status != 0) return Error{"gemtables build failed:\n" + built.log};
+    }
+    std::ofstream manifest(dir / "catalogue.toml");
+    manifest << "[catalogue]\nname = \"" << stone << "\"\n\n[[stone]]\nname = \"" << stone
+             << "\"\ndatabase = \"" << stone << ".gemdb\"\nring = \"parametric\"\n";
+    return dir;
+}
+
+fs::path write_config(const fs::path& dir, const fs::path& catalogue, const std::string& extra) {
+    const fs::path file = dir / "gemkiosk.toml";
+    std::ofstream out(file);
+    out << "crossfade_s = 0.0\n"
+        << "[display]\nbackend = \"headless\"\nheadless_width = " << kWidth
+        << "\nheadless_height = " << kHeight << "\nheadless_rate_hz = 0.0\n"
+        << "[input]\ndevice_dir = \"" << (dir / "no-input").string() << "\"\n"
+        << "[gestures]\ndegrees_per_picture_height = " << kDegreesPerHeight
+        << "\ninertia_half_life_s = 0.0\ntap = \"none\"\ntwo_finger_tap = \"none\"\n"
+        << "[attract]\nidle_s = 0.0\n"
+        << "[render]\nmethod = \"table\"\ncube_face = 64\ndepth = 6\n"
+        << "[catalogue]\ndefault_dir = \"" << catalogue.string() << "\"\nstate_dir = \""
+        << (dir / "state").string() << "\"\ninbox_dir = \"" << (dir / "state" / "inbox").string()
+        << "\"\nsettle_s = 0.3\n"
+        << "[snapshot]\ndir = \"" << (dir / "snapshots").string() << "\"\n"
+        << "[[background]]\nname = \"black\"\nkind = \"colour\"\ncolour = [0.0, 0.0, 0.0]\n"
+        << "[[lighting]]\nname = \"one light\"\nenvironment_intensity = 1.0\n"
+        << "[[lighting.light]]\nposition = [-30.0, 80.0, 45.0]\ncolour = [2.0, 2.0, 2.0]\n"
+        << extra;
+    return file;
+}
+
+std::vector<std::string> replay_command(const fs::path& config, const fs::path& recording) {
+    return {GEMKIOSK_PATH,     "--config",         config.string(),
+            "--replay",        recording.string(), "--exit-after-replay",
+            "--snapshot-last", "--seconds",        "120"};
+}
+
+namespace {
+
+struct RawEvent {
+    int type = 0;
+    int code = 0;
+    int value = 0;
+};
+
+// The E: lines and the ABS_X/ABS_Y maxima of the A: lines (evemu's format: type and code in
+// hex, value decimal; "A: <code hex> <min> <max> ...").
+std::vector<RawEvent> read_events(const fs::path& recording, glm::dvec2* axis_max) {
+    std::ifstream in(recording);
+    std::vector<RawEvent> events;
+    std::string line;
+    while (std::getline(in, line)) {
+        std::istringstream words(line);
+        std::string tag;
+        words >> tag;
+        if (tag == "E:") {
+            std::string time, type, code;
+            int value = 0;
+            words >> time >> type >> code >> value;
+            events.push_back({std::stoi(type, nullptr, 16), std::stoi(code, nullptr, 16), value});
+        } else if (tag == "A:" && axis_max != nullptr) {
+            std::string code;
+            int min = 0, max = 0;
+            words >> code >> min >> max;
+            if (code == "00") axis_max->x = max;
+            if (code == "01") axis_max->y = max;
+        }
+    }
+    return events;
+}
+
+constexpr int kEvSyn = 0, kEvAbs = 3, kSynReport = 0, kSynMtReport = 2;
+constexpr int kAbsX = 0x00, kAbsY = 0x01, kMtSlot = 0x2f, kMtX = 0x35, kMtY = 0x36,
+              kMtTrackingId = 0x39;
+
+}  // namespace
+
+RawTouch one_finger_path(const fs::path& recording, const fs::path& description) {
+    RawTouch touch;
+    if (!description.empty()) read_events(description, &touch.axis_max);
+    glm::dvec2 position(0.0);
+    bool down = false, seen = false;
+    for (const RawEvent& e : read_events(recording, &touch.axis_max)) {
+        if (e.type == kEvAbs && (e.code == kMtX || e.code == kAbsX)) position.x = e.value;
+        if (e.type == kEvAbs && (e.code == kMtY || e.code == kAbsY)) position.y = e.value;
+        if (e.type == kEvAbs && e.code == kMtTrackingId) down = e.value >= 0;
+        if (e.type == kEvSyn && e.code == kSynMtReport) down = true;  // protocol A: a contact
+        if (e.type == kEvSyn && e.code == kSynReport && down) {
+            if (!seen) touch.first = position;
+            seen = true;
+            touch.last = position;
+            touch.path.push_back(position);
+        }
+    }
+    return touch;
+}
+
+glm::dvec2 two_finger_distances(const fs::path& recording) {
+    std::map<int, glm::dvec2> slots;
+    std::map<int, bool> active;
+    int slot = 0;
+    double first = -1.0, last = -1.0;
+    for (const RawEvent& e : read_events(recording, nullptr)) {
+        if (e.type == kEvAbs && e.code == kMtSlot) slot = e.value;
+        if (e.type == kEvAbs && e.code == kMtTrackingId) active[slot] = e.value >= 0;
+        if (e.type == kEvAbs && e.code == kMtX) slots[slot].x = e.value;
+        if (e.type == kEvAbs && e.code == kMtY) slots[slot].y = e.value;
+        if (e.type == kEvSyn && e.code == kSynReport && active[0] && active[1]) {
+            const double d = glm::length(slots[0] - slots[1]);
+            if (first < 0.0) first = d;
+            last = d;
+        }
+    }
+    return {first, last};
+}
+
+Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewState& view) {
+    static std::unique_ptr<gpu::EglContext> context;
+    if (!context) {
+        auto made = gpu::EglContext::headless();
+        if (!made) return Error{made.error()};
+        context = std::make_unique<gpu::EglContext>(std::move(made).value());
+    }
+    auto validated = kiosk::validate_catalogue(catalogue);
+    if (!validated) return Error{validated.error()};
+    // The same presets the kiosk reads from write_config's file, parsed the same way.
+    const fs::path config_dir = fresh_dir("reference-config");
+    const kiosk::ConfigLoad config = kiosk::load_config(write_config(config_dir, catalogue));
+    if (!config.errors.empty()) return Error{"test config: " + config.errors.front()};
+    kiosk::SceneSelection selection(config.config.backgrounds, config.config.lightings);
+    selection.set_catalogue(validated.value());
+    kiosk::RenderChoice render;
+    render.cube_face = config.config.render.cube_face;
+    render.depth = config.config.render.depth;
+    render.wait_for_views = true;
+    auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render);
+    if (!scene) return Error{scene.error()};
+    gpu::FrameRenderer& renderer = scene.value()->renderer();
+    CameraSettings settings{.azimuth_deg = view.azimuth_deg,
+                            .elevation_deg = view.elevation_deg,
+                            .roll_deg = view.roll_deg,
+                            .zoom = view.zoom};
+    auto camera = Camera::make(settings, renderer.scene_radius_mm(), kWidth, kHeight);
+    if (!camera) return Error{camera.error()};
+    auto target = gpu::RenderTarget::make(kWidth, kHeight);
+    if (!target) return Error{target.error()};
+    target.value().bind();
+    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    auto drawn = renderer.render(camera.value(), true);
+    if (!drawn) return Error{drawn.error()};
+    return target.value().read();
+}
+
+double psnr_srgb8(const Image& a, const Image& b) {
+    const std::vector<std::uint8_t> x = to_srgb8(a, 3);
+    const std::vector<std::uint8_t> y = to_srgb8(b, 3);
+    if (x.size() != y.size() || x.empty()) return 0.0;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < x.size(); ++i) {
+        const double d = static_cast<double>(x[i]) - static_cast<double>(y[i]);
+        sum += d * d;
+    }
+    const double mse = sum / static_cast<double>(x.size());
+    return mse == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+}  // namespace gem::kiosk_e2e

@@ -1,0 +1,44 @@
+#pragma once
+// Runs the real gemkiosk program for the end-to-end tests: started with arguments, its stderr
+// (the log) read line by line as it comes, waited for with a deadline, stopped by signal.
+
+#include <sys/types.h>
+
+#include <chrono>
+#include <string>
+#include <vector>
+
+namespace gem::kiosk_e2e {
+
+class KioskProcess {
+  public:
+    explicit KioskProcess(const std::vector<std::string>& arguments);
+    ~KioskProcess();  // kills the program if it still runs
+    KioskProcess(const KioskProcess&) = delete;
+    KioskProcess& operator=(const KioskProcess&) = delete;
+
+    // Reads the log until a line containing `text` arrives (true) or the deadline passes or
+    // the program ends (false).
+    bool wait_for_line(const std::string& text, std::chrono::seconds deadline);
+    void signal(int signal_number) const;
+    // Waits for the program to end (reading the rest of its log); its exit status, or -1 if it
+    // had to be killed at the deadline.
+    int wait(std::chrono::seconds deadline);
+    const std::string& log() const { return log_; }
+
+  private:
+    bool read_some(int timeout_ms);
+    pid_t pid_ = -1;
+    int out_ = -1;
+    std::string log_;
+    std::size_t scanned_ = 0;
+};
+
+// Runs the program to the end; exit status and log.
+struct Finished {
+    int status = -1;
+    std::string log;
+};
+Finished run_kiosk(const std::vector<std::string>& arguments, std::chrono::seconds deadline);
+
+}  // namespace gem::kiosk_e2e

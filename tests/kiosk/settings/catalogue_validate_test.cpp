@@ -1,0 +1,143 @@
+// validate_catalogue: a good catalogue comes back with its databases open; every damaged file
+// is refused in one line naming the catalogue, the file and the fault.
+
+#include <gtest/gtest.h>
+
+#include "catalogue/validate.hpp"
+#include "catalogue_test_support.hpp"
+#include "tables/reader.hpp"
+
+namespace gem::kiosk {
+namespace {
+
+namespace fs = std::filesystem;
+using namespace catalogue_test;
+
+// A tetrahedron under the stone, four faces written by hand: 12 triangle corners.
+const char* kTetrahedronObj = R"(v 0 -5 -1
+v 1 -5 1
+v -1 -5 1
+v 0 -4 0
+f 1 2 3
+f 1 4 2
+f 2 4 3
+f 3 4 1
+)";
+
+fs::path two_stone_catalogue(const std::string& name) {
+    const fs::path dir = fresh_dir(name);
+    write_text(dir / "catalogue.toml", R"([catalogue]
+name = "spring"
+[[stone]]
+name = "Round"
+database = "stones/round.gemdb"
+[[stone]]
+name = "Round in a ring"
+database = "stones/second.gemdb"
+ring = "rings/tetra.obj"
+metal = "platinum"
+)");
+    write_bytes(dir / "stones" / "round.gemdb", read_bytes(tiny_database()));
+    write_bytes(dir / "stones" / "second.gemdb", read_bytes(tiny_database()));
+    write_text(dir / "rings" / "tetra.obj", kTetrahedronObj);
+    return dir;
+}
+
+std::string rejection(const std::string& catalogue, const fs::path& dir) {
+    auto result = validate_catalogue(dir);
+    if (result.ok()) return "(accepted " + catalogue + ")";
+    return result.error();
+}
+
+TEST(CatalogueValidate, GoodCatalogueComesBackOpen) {
+    const fs::path dir = two_stone_catalogue("validate-good");
+    auto result = validate_catalogue(dir);
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Catalogue& c = result.value();
+    EXPECT_EQ(c.name, "spring");
+    EXPECT_EQ(c.directory, fs::canonical(dir));
+    ASSERT_EQ(c.stones.size(), 2u);
+    const auto bytes = read_bytes(tiny_database());
+    for (const CatalogueStone& stone : c.stones) {
+        ASSERT_NE(stone.opened, nullptr) << stone.name;
+        EXPECT_EQ(stone.opened->view_count(), header_view_count(bytes));
+        EXPECT_EQ(stone.opened->path().parent_path(), fs::canonical(dir) / "stones");
+    }
+    EXPECT_EQ(c.stones[0].ring_mesh, nullptr) << "a parametric ring is made by the renderer";
+    ASSERT_NE(c.stones[1].ring_mesh, nullptr);
+    EXPECT_EQ(c.stones[1].ring_mesh->indices.size(), 12u);
+}
+
+TEST(CatalogueValidate, ThroughASymlinkNamesTheRealDirectory) {
+    const fs::path dir = two_stone_catalogue("validate-target");
+    const fs::path link = fs::path(GEM_ARTIFACT_DIR) / "catalogue" / "validate-link";
+    fs::remove(link);
+    fs::create_directory_symlink(dir, link);
+    auto result = validate_catalogue(link);
+    ASSERT_TRUE(result.ok()) << result.error();
+    EXPECT_EQ(result.value().directory, fs::canonical(dir));
+}
+
+TEST(CatalogueValidate, FlippedPayloadByteNamesFileViewAndLevel) {
+    const auto good = read_bytes(tiny_database());
+    const std::uint32_t views = header_view_count(good);
+    ASSERT_GE(views, 2u) << "the tiny database should hold several views";
+    for (const std::uint32_t view : {0u, views - 1}) {
+        const fs::path dir = two_stone_catalogue("validate-flip-" + std::to_string(view));
+        std::vector<std::uint8_t> bad = good;
+        const PayloadSpan span = payload_span(bad, view, 0, 1);
+        ASSERT_GT(span.bytes, 0u);
+        bad.at(span.offset + span.bytes / 2) ^= 0x20;
+        write_bytes(dir / "stones" / "second.gemdb", bad);
+        // Opening checks only the header, sections and index: the payload check is what
+        // must catch this.
+        ASSERT_TRUE(Database::open(dir / "stones" / "second.gemdb").ok());
+        EXPECT_EQ(rejection("flip", dir),
+                  "catalogue 'spring' rejected: stones/second.gemdb: view " + std::to_string(view) +
+                      " level 0: checksum mismatch");
+    }
+}
+
+TEST(CatalogueValidate, TruncatedDatabaseIsNamed) {
+    const fs::path dir = two_stone_catalogue("validate-truncated");
+    auto bytes = read_bytes(tiny_database());
+    const std::size_t full = bytes.size();
+    bytes.resize(full / 2);
+    write_bytes(dir / "stones" / "round.gemdb", bytes);
+    EXPECT_EQ(rejection("truncated", dir),
+              "catalogue 'spring' rejected: stones/round.gemdb: truncated: " +
+                  std::to_string(full / 2) + " of " + std::to_string(full) + " bytes");
+}
+
+TEST(CatalogueValidate, MissingDatabaseIsNamed) {
+    const fs::path dir = two_stone_catalogue("validate-missing");
+    fs::remove(dir / "stones" / "second.gemdb");
+    EXPECT_EQ(rejection("missing", dir),
+              "catalogue 'spring' rejected: stones/second.gemdb: "
+              "cannot open: No such file or directory");
+}
+
+TEST(CatalogueValidate, BrokenRingNamesFileAndLine) {
+    const fs::path dir = two_stone_catalogue("validate-ring");
+    write_text(dir / "rings" / "tetra.obj", "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0 0 1\nf 1 2 9\n");
+    EXPECT_EQ(rejection("ring", dir),
+              "catalogue 'spring' rejected: rings/tetra.obj:5: face "
+              "index 9 out of range (4 vertices so far)");
+}
+
+TEST(CatalogueValidate, ManifestFaultNamesTheDirectory) {
+    const fs::path dir = two_stone_catalogue("validate-manifest");
+    write_text(dir / "catalogue.toml", "[catalogue]\nname = \"spring\"\n");
+    EXPECT_EQ(rejection("manifest", dir),
+              "catalogue 'validate-manifest' rejected: "
+              "catalogue.toml:1: stone: no [[stone]] entries");
+}
+
+TEST(CatalogueValidate, MissingDirectoryIsNamed) {
+    const fs::path dir = fresh_dir("validate-gone") / "nothing";
+    const std::string error = rejection("gone", dir);
+    EXPECT_EQ(error.rfind("catalogue 'nothing' rejected: " + dir.string() + ": ", 0), 0u) << error;
+}
+
+}  // namespace
+}  // namespace gem::kiosk
