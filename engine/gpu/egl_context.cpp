@@ -3,6 +3,7 @@
 #include <cstdio>
 #include <cstring>
 #include <utility>
+#include <vector>
 
 #include <EGL/eglext.h>
 #include <GLES3/gl3.h>
@@ -148,10 +149,15 @@ Result<EglContext> EglContext::window(EGLenum platform, void* native_display, vo
                                         EGL_BLUE_SIZE,
                                         8,
                                         EGL_NONE};
-    EGLConfig configs[64];
+    // Every matching config: EGL sorts deeper colour first, so a fixed-size list can hold only
+    // 10-bit and float configs and miss the 8-bit one the display's format needs.
     EGLint count = 0;
-    if (!eglChooseConfig(ctx.display_, config_attributes, configs, 64, &count) || count == 0) {
+    if (!eglChooseConfig(ctx.display_, config_attributes, nullptr, 0, &count) || count == 0) {
         return Error{"EGL: no OpenGL ES 3 window configuration on this display"};
+    }
+    std::vector<EGLConfig> configs(static_cast<std::size_t>(count));
+    if (!eglChooseConfig(ctx.display_, config_attributes, configs.data(), count, &count)) {
+        return egl_failure("eglChooseConfig");
     }
     EGLConfig chosen = configs[0];
     if (native_visual != 0) {

@@ -16,6 +16,12 @@ double quantile(std::vector<double> values, double p) {
     return values[std::min(i, values.size() - 1)];
 }
 
+void FrameStats::add(const FrameRecord& record) {
+    frames_.push_back(record);
+    ++total_;
+    if (max_records_ > 0 && frames_.size() > max_records_) frames_.pop_front();
+}
+
 namespace {
 
 std::string describe(const char* what, const std::vector<double>& v) {
@@ -39,10 +45,14 @@ std::string FrameStats::summary() const {
     }
     const double span_s =
         frames_.back().start_s + frames_.back().draw_ms / 1000.0 - frames_.front().start_s;
-    char head[128];
+    char head[160];
     std::snprintf(head, sizeof head, "%zu frames in %.1f s: %.2f frames/s; ", frames_.size(),
                   span_s, span_s > 0.0 ? static_cast<double>(frames_.size()) / span_s : 0.0);
-    std::string s = head + describe("draw", draw);
+    std::string s = head;
+    if (static_cast<long>(frames_.size()) < total_) {
+        s = std::to_string(total_) + " frames, the last " + s;
+    }
+    s += describe("draw", draw);
     if (!interval.empty()) s += "; " + describe("interval", interval);
     if (!latency.empty()) {
         s += "; " + describe("input-to-frame", latency) + " (" + std::to_string(latency.size()) +

@@ -5,6 +5,7 @@
 // is what the closing log line and the benchmark report; a CSV keeps every frame.
 
 #include <cstdio>
+#include <deque>
 #include <string>
 #include <vector>
 
@@ -20,8 +21,12 @@ struct FrameRecord {
 
 class FrameStats {
   public:
-    void add(const FrameRecord& record) { frames_.push_back(record); }
-    const std::vector<FrameRecord>& frames() const { return frames_; }
+    // Keeps at most `max_records` frames (the newest): a kiosk runs for weeks, and every frame
+    // kept is memory; 0 keeps all (bounded runs that write a CSV).
+    explicit FrameStats(std::size_t max_records = 0) : max_records_(max_records) {}
+    void add(const FrameRecord& record);
+    const std::deque<FrameRecord>& frames() const { return frames_; }
+    long total() const { return total_; }  // every frame added, kept or not
 
     // "600 frames in 40.1 s: 15.0 frames/s; draw ms p50 63.1 p90 70.2 p99 81.0 max 90.3;
     //  input-to-frame ms p50 .. (n events)".
@@ -30,7 +35,9 @@ class FrameStats {
     bool write_csv(const std::string& path, std::string& error) const;
 
   private:
-    std::vector<FrameRecord> frames_;
+    std::size_t max_records_;
+    std::deque<FrameRecord> frames_;
+    long total_ = 0;
 };
 
 // The p-quantile (0..1) of `values` by the nearest-rank method; 0 for an empty list.

@@ -52,7 +52,9 @@ int run_kiosk(const KioskRun& run) {
     }
     KioskSession& session = *session_made.value();
 
-    FrameStats stats;
+    // Every frame for a bounded run or a CSV; the last ten minutes at 60 Hz otherwise.
+    const bool keep_all = !run.stats_csv.empty() || run.max_frames > 0;
+    FrameStats stats(keep_all ? 0 : 36000);
     double last_status_s = monotonic_now_s();
     long frames_at_status = 0;
     bool stop = false;
@@ -92,7 +94,7 @@ int run_kiosk(const KioskRun& run) {
         }
         session.tick(now);
         if (now - last_status_s >= kStatusEveryS) {
-            const long frames = static_cast<long>(stats.frames().size());
+            const long frames = stats.total();
             char line[160];
             std::snprintf(line, sizeof line,
                           "status: %ld frames, %.2f frames/s in the last %.0f s, "
@@ -104,8 +106,7 @@ int run_kiosk(const KioskRun& run) {
             last_status_s = now;
             frames_at_status = frames;
         }
-        if (run.max_frames > 0 && static_cast<long>(stats.frames().size()) >= run.max_frames)
-            stop = true;
+        if (run.max_frames > 0 && stats.total() >= run.max_frames) stop = true;
         if (run.max_seconds > 0.0 && session.seconds_running(now) >= run.max_seconds) stop = true;
         if (run.exit_after_replay && session.replay_settled(now)) stop = true;
     }

@@ -107,11 +107,6 @@ Result<bool> KioskSession::configure() {
 
     if (config_.display.backend == "drm") {
         seat_ = Seat::open();
-        // Switched to another VT, the kiosk cannot show frames; the watchdog then follows the
-        // loop's liveness instead of frame progress, so systemd does not restart a kiosk that
-        // is merely in the background.
-        seat_->add_listener({[this] { notifier_.set_frames_expected(false); },
-                             [this] { notifier_.set_frames_expected(display_ != nullptr); }});
     }
     if (!run_.replay.empty()) {
         EvemuReplayOptions replay;
@@ -158,8 +153,12 @@ void KioskSession::try_open_display(double now_s) {
     auto made = make_gpu_objects();
     if (!made) {
         log_error(made.error());
+        // GL objects go before the context that owns them.
+        crossfade_.reset();
+        picture_.reset();
         display_.reset();
         next_display_try_s_ = now_s + kDisplayRetryS;
+        notifier_.set_frames_expected(false);
         return;
     }
     const glm::ivec2 size = display_->picture_size();
@@ -189,6 +188,9 @@ Result<bool> KioskSession::make_gpu_objects() {
 std::vector<int> KioskSession::poll_fds() const {
     std::vector<int> fds;
     if (display_ && display_->event_fd() >= 0) fds.push_back(display_->event_fd());
+    // The display polls the seat while it exists; without one the seat is still served, so a
+    // VT switch is acknowledged even while the kiosk waits for a screen.
+    if (!display_ && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
     if (input_) fds.push_back(input_->fd());
     if (watcher_) fds.push_back(watcher_->event_fd());
     return fds;
@@ -212,6 +214,7 @@ bool KioskSession::display_ready() const {
 void KioskSession::dispatch(double now_s) {
     if (!display_ && now_s >= next_display_try_s_) try_open_display(now_s);
     if (display_) display_->dispatch();
+    if (!display_ && seat_) seat_->dispatch();
     std::vector<InputEvent> events;
     if (input_) events = input_->dispatch(now_s);
     if (replay_) events = replay_->poll(now_s);
@@ -325,6 +328,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     if (!faded) return Error{faded.error()};
     auto presented = display_->present(*picture_);
     if (!presented) return Error{"display: " + presented.error()};
+    if (!presented.value()) return std::optional<FrameRecord>{};  // drawn, but not shown
     const double done_s = monotonic_now_s();
     record.draw_ms = (done_s - record.start_s) * 1000.0;
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
@@ -390,8 +394,12 @@ void KioskSession::finish() {
         v.azimuth_deg, v.elevation_deg, v.roll_deg, v.zoom, selection_->describe().c_str());
     log_info(line);
     if (run_.snapshot_last && picture_) write_snapshot_file("last.png");
+    // GL objects go while their context is current, then the display (which restores the mode
+    // the screen had before the kiosk).
     scene_.reset();
-    display_.reset();  // restores the mode the screen had before the kiosk
+    crossfade_.reset();
+    picture_.reset();
+    display_.reset();
 }
 
 }  // namespace gem::kiosk

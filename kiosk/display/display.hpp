@@ -28,8 +28,13 @@ class Display {
     // True when a new frame may be drawn and presented now: no flip pending, DRM master held,
     // an output connected (DRM); the frame timer has fired (headless).
     virtual bool ready() const = 0;
-    // Shows the picture. Errors are for faults that end the display (the caller logs them);
-    // a lost flip or a lost output is handled inside and shows up as ready() staying false.
+    // True while frames can reach the screen at all: false while switched away to another VT
+    // or with the output unplugged (the watchdog then stops waiting for frames).
+    virtual bool showing() const { return true; }
+    // Shows the picture: true when it was handed to the screen, false when it could not be (a
+    // failed modeset, no output), which the caller must not count as a frame shown. Errors are
+    // for faults that end the display (the caller logs them); a lost flip or a lost output is
+    // handled inside and shows up as ready() staying false.
     virtual Result<bool> present(const gpu::RenderTarget& picture) = 0;
 
     // A file descriptor to poll for input (page-flip events, hotplug, frame timer); -1: none.

@@ -10,6 +10,7 @@
 #include <gbm.h>
 #include <libudev.h>
 #include <sys/epoll.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include <xf86drm.h>
 
@@ -71,6 +72,17 @@ Result<std::unique_ptr<DrmDisplay>> DrmDisplay::make(const DisplayOptions& optio
     }
     auto context = gpu::EglContext::window(EGL_PLATFORM_GBM_KHR, d->gbm_, d->surface_,
                                            static_cast<EGLint>(format));
+    if (!context && format == GBM_FORMAT_XRGB8888) {
+        // The GBM surface took XRGB8888 but EGL offers no config of that visual: some drivers
+        // expose only ARGB8888 configs. Try again with a surface of that format.
+        gbm_surface_destroy(d->surface_);
+        format = GBM_FORMAT_ARGB8888;
+        d->surface_ = gbm_surface_create(d->gbm_, width, height, format,
+                                         GBM_BO_USE_SCANOUT | GBM_BO_USE_RENDERING);
+        if (d->surface_ == nullptr) return Error{where + context.error()};
+        context = gpu::EglContext::window(EGL_PLATFORM_GBM_KHR, d->gbm_, d->surface_,
+                                          static_cast<EGLint>(format));
+    }
     if (!context) return Error{where + context.error()};
     d->context_.emplace(std::move(context).value());
     auto pass = PresentPass::make();
@@ -168,11 +180,15 @@ glm::ivec2 DrmDisplay::picture_size() const {
 }
 
 bool DrmDisplay::ready() const {
-    return seat_->active() && connected_ && pending_ == nullptr;
+    return showing() && pending_ == nullptr && Clock::now() >= modeset_retry_at_;
+}
+
+bool DrmDisplay::showing() const {
+    return seat_->active() && connected_;
 }
 
 Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
-    if (!ready()) return true;
+    if (!ready()) return false;
     const glm::ivec2 scanout(output_.mode.hdisplay, output_.mode.vdisplay);
     if (glm::ivec2(picture.width(), picture.height()) != picture_size()) {
         return Error{"DRM display: picture is " + std::to_string(picture.width()) + "x" +
@@ -199,10 +215,11 @@ Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
             const std::string message = "DRM display " + card_ + " " + connector_name_ + ": " +
                                         commit_->name() + " modeset failed: " + errno_text(r);
             if (!lit_once_) return Error{message};
-            // Lost master or a monitor that refuses the mode: try again next frame, quietly.
-            if (!flip_lost_logged_) log_warning(message + "; retrying every frame");
+            // Lost master or a monitor that refuses the mode: try again in a second, quietly.
+            if (!flip_lost_logged_) log_warning(message + "; retrying every second");
             flip_lost_logged_ = true;
-            return true;
+            modeset_retry_at_ = Clock::now() + std::chrono::seconds(1);
+            return false;
         }
         release(current_);
         current_ = bo;
@@ -255,8 +272,12 @@ void DrmDisplay::dispatch() {
             seat_->dispatch();
         } else if (monitor_ != nullptr && fd == udev_monitor_get_fd(monitor_)) {
             while (udev_device* device = udev_monitor_receive_device(monitor_)) {
-                const char* node = udev_device_get_devnode(device);
-                if (node != nullptr && card_ == node) hotplug = true;
+                // By device number, not path: the card may have been named through a
+                // symlink such as /dev/dri/by-path/...
+                struct stat card {};
+                if (::fstat(fd_, &card) == 0 && udev_device_get_devnum(device) == card.st_rdev) {
+                    hotplug = true;
+                }
                 udev_device_unref(device);
             }
         }
@@ -290,6 +311,11 @@ int DrmDisplay::timeout_ms() const {
         const auto deadline = flip_queued_at_ + milliseconds(flip_timeout_ms_ + 1);
         t = std::max(0L, static_cast<long>(duration_cast<milliseconds>(deadline - now).count()));
     }
+    if (now < modeset_retry_at_) {
+        const long r =
+            static_cast<long>(duration_cast<milliseconds>(modeset_retry_at_ - now).count() + 1);
+        t = t < 0 ? r : std::min(t, r);
+    }
     if (monitor_ == nullptr) {
         const long r = std::max(
             0L, static_cast<long>(duration_cast<milliseconds>(next_reprobe_ - now).count()));
@@ -309,7 +335,7 @@ void DrmDisplay::drop_pending_flip() {
 
 void DrmDisplay::reprobe() {
     // After a udev event the kernel has probed already; polling only reads its state.
-    auto outputs = probe_outputs(fd_, card_, monitor_ != nullptr);
+    auto outputs = probe_outputs(fd_, card_, /*force=*/monitor_ == nullptr);
     if (!outputs) return;
     bool now_connected = false;
     bool mode_offered = false;

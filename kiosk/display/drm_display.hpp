@@ -43,6 +43,7 @@ class DrmDisplay final : public Display {
     int rotation_deg() const override { return rotation_deg_; }
     gpu::EglContext& context() override { return *context_; }
     bool ready() const override;
+    bool showing() const override;
     Result<bool> present(const gpu::RenderTarget& picture) override;
     int event_fd() const override { return epoll_fd_; }
     void dispatch() override;
@@ -84,6 +85,9 @@ class DrmDisplay final : public Display {
     gbm_bo* current_ = nullptr;  // on screen
     gbm_bo* pending_ = nullptr;  // queued for the next vblank
     Clock::time_point flip_queued_at_{};
+    // After a failed modeset (master lost, a monitor refusing the mode) the next try waits
+    // until then, so the loop neither spins nor counts unseen frames as shown.
+    Clock::time_point modeset_retry_at_{};
     bool needs_modeset_ = true;
     bool lit_once_ = false;
     bool connected_ = true;

@@ -43,3 +43,21 @@ TEST(FrameStats, CsvToAnUnwritablePlaceIsAnError) {
 
 }  // namespace
 }  // namespace gem::kiosk
+
+namespace gem::kiosk {
+namespace {
+
+TEST(FrameStats, BoundedStatsKeepTheNewestFramesAndCountThemAll) {
+    FrameStats stats(3);
+    for (int i = 0; i < 5; ++i) stats.add({.start_s = double(i), .draw_ms = 10.0 * (i + 1)});
+    EXPECT_EQ(stats.total(), 5);
+    ASSERT_EQ(stats.frames().size(), 3u);
+    EXPECT_EQ(stats.frames().front().start_s, 2.0);  // frames 2, 3, 4 remain
+    EXPECT_EQ(stats.frames().back().draw_ms, 50.0);
+    // The summary says which frames it describes: 3 frames from 2 s to 4.05 s.
+    EXPECT_NE(stats.summary().find("5 frames, the last 3 frames in 2.0 s"), std::string::npos)
+        << stats.summary();
+}
+
+}  // namespace
+}  // namespace gem::kiosk

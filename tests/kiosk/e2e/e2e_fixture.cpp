@@ -155,13 +155,19 @@ glm::dvec2 two_finger_distances(const fs::path& recording) {
     return {first, last};
 }
 
-Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewState& view) {
+Result<bool> make_context_current() {
     static std::unique_ptr<gpu::EglContext> context;
     if (!context) {
         auto made = gpu::EglContext::headless();
         if (!made) return Error{made.error()};
         context = std::make_unique<gpu::EglContext>(std::move(made).value());
     }
+    return true;
+}
+
+Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewState& view) {
+    auto context = make_context_current();
+    if (!context) return Error{context.error()};
     auto validated = kiosk::validate_catalogue(catalogue);
     if (!validated) return Error{validated.error()};
     // The same presets the kiosk reads from write_config's file, parsed the same way.

@@ -60,6 +60,10 @@ glm::dvec2 two_finger_distances(const std::filesystem::path& recording);
 Result<Image> reference_picture(const std::filesystem::path& catalogue,
                                 const kiosk::ViewState& view);
 
+// The one EGL context of this test process (contexts share Mesa's display: destroying one
+// would tear down the others).
+Result<bool> make_context_current();
+
 // PSNR of the two images' 8-bit sRGB encodings, dB.
 double psnr_srgb8(const Image& a, const Image& b);
 
