@@ -8,25 +8,12 @@
 
 #include <gtest/gtest.h>
 
+#include "fixture_lines.hpp"
 #include "settings/kiosk_config.hpp"
 
 namespace gem::kiosk {
 namespace {
 
-// 1-based number of the line of `text` that contains `needle` (its `nth` occurrence).
-int line_of(std::string_view text, std::string_view needle, int nth = 1) {
-    std::size_t at = std::string_view::npos;
-    for (std::size_t from = 0; nth > 0; --nth, from = at + 1) {
-        at = text.find(needle, from);
-        if (at == std::string_view::npos) {
-            ADD_FAILURE() << "fixture has no " << needle;
-            return -1;
-        }
-    }
-    int line = 1;
-    for (std::size_t i = 0; i < at; ++i) line += text[i] == '\n' ? 1 : 0;
-    return line;
-}
 
 std::string message(std::string_view text, std::string_view needle, std::string_view key,
                     std::string_view what) {
