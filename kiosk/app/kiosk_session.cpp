@@ -203,12 +203,20 @@ double KioskSession::next_deadline_s(double now_s) const {
         next = std::min(next, now_s + display_->timeout_ms() / 1000.0);
     }
     if (replay_) next = std::min(next, replay_->next_due_s());
+    if (display_ && display_->ready()) next = std::min(next, next_frame_allowed_s());
     next = std::min(next, notifier_.next_ping_s(now_s));
     return next;
 }
 
+double KioskSession::next_frame_allowed_s() const {
+    // render.frame_rate_hz caps the rate below the display's (a cooler, quieter kiosk).
+    const double rate = config_.render.frame_rate_hz;
+    if (rate <= 0.0 || last_frame_start_s_ < 0.0) return 0.0;
+    return last_frame_start_s_ + 1.0 / rate;
+}
+
 bool KioskSession::display_ready() const {
-    return display_ && display_->ready();
+    return display_ && display_->ready() && monotonic_now_s() >= next_frame_allowed_s();
 }
 
 void KioskSession::dispatch(double now_s) {
@@ -320,6 +328,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
 
     FrameRecord record;
     record.start_s = monotonic_now_s();
+    last_frame_start_s_ = record.start_s;
     picture_->bind();
     glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -55,6 +55,7 @@ class KioskSession {
     explicit KioskSession(const KioskRun& run) : run_(run) {}
     Result<bool> configure();
     void try_open_display(double now_s);
+    double next_frame_allowed_s() const;
     Result<bool> make_gpu_objects();
     void switch_catalogue(Catalogue catalogue, double now_s);
     void rebuild_scene(double now_s);
@@ -90,6 +91,7 @@ class KioskSession {
     bool first_frame_shown_ = false;
     long frame_number_ = 0;
     double last_present_s_ = -1.0;
+    double last_frame_start_s_ = -1.0;
     bool snapshot_requested_ = false;
     glm::dvec3 last_forward_{0.0};
     double last_forward_s_ = -1.0;

@@ -101,3 +101,37 @@ TEST(KioskFaults, DamagedRecordingIsRefusedWithFileAndLine) {
 
 }  // namespace
 }  // namespace gem::kiosk_e2e
+
+namespace gem::kiosk_e2e {
+namespace {
+
+TEST(KioskFrameRate, FrameRateCapIsNeverExceeded) {
+    // render.frame_rate_hz = 10 over a 2-second run: at most 21 frames however fast the
+    // machine draws (uncapped, this small picture draws at 80+ frames/s here). Only the upper
+    // bound is checked: a slow machine may draw fewer.
+    auto catalogue = test_catalogue("tolkowsky-diamond");
+    ASSERT_TRUE(catalogue.ok());
+    const fs::path dir = fresh_dir("frame-rate-cap");
+    std::string text;
+    {
+        std::ifstream in(write_config(dir, catalogue.value()));
+        for (std::string l; std::getline(in, l);) {
+            text += l + "\n";
+            if (l == "[render]") text += "frame_rate_hz = 10.0\n";
+        }
+    }
+    std::ofstream(dir / "gemkiosk.toml") << text;
+    const fs::path csv = dir / "frames.csv";
+    const Finished run = run_kiosk({GEMKIOSK_PATH, "--config", (dir / "gemkiosk.toml").string(),
+                                    "--seconds", "2", "--stats", csv.string()},
+                                   std::chrono::seconds(60));
+    ASSERT_EQ(run.status, 0) << run.log;
+    std::ifstream rows(csv);
+    int frames = -1;  // the header
+    for (std::string l; std::getline(rows, l);) ++frames;
+    EXPECT_GT(frames, 0);
+    EXPECT_LE(frames, 21) << run.log;
+}
+
+}  // namespace
+}  // namespace gem::kiosk_e2e
