@@ -138,6 +138,16 @@ constexpr KeySpec<GestureOptions> kGestureKeys[] = {
                      GestureOptions& o) { r.number(n, k, 0.01, 5.0, o.tap_max_s); }},
     {"tap_max_move_px", [](ConfigReader& r, const Node& n, Key k,
                            GestureOptions& o) { r.number(n, k, 0.0, 1000.0, o.tap_max_move_px); }},
+    {"fling_window_s", [](ConfigReader& r, const Node& n, Key k,
+                          GestureOptions& o) { r.number(n, k, 0.01, 1.0, o.fling_window_s); }},
+    {"fling_min_deg_per_s",
+     [](ConfigReader& r, const Node& n, Key k, GestureOptions& o) {
+         r.number(n, k, 0.0, 3600.0, o.fling_min_deg_per_s);
+     }},
+    {"fling_max_deg_per_s",
+     [](ConfigReader& r, const Node& n, Key k, GestureOptions& o) {
+         r.number(n, k, 1.0, 36000.0, o.fling_max_deg_per_s);
+     }},
 };
 
 constexpr KeySpec<GestureOptions> kAttractKeys[] = {
@@ -149,6 +159,12 @@ constexpr KeySpec<GestureOptions> kAttractKeys[] = {
                     GestureOptions& o) { r.number(n, k, 0.0, 86400.0, o.attract_preset_s); }},
     {"stone_s", [](ConfigReader& r, const Node& n, Key k,
                    GestureOptions& o) { r.number(n, k, 0.0, 86400.0, o.attract_stone_s); }},
+    {"elevation_deg",
+     [](ConfigReader& r, const Node& n, Key k, GestureOptions& o) {
+         r.number(n, k, -90.0, 90.0, o.attract_elevation_deg);
+     }},
+    {"ease_s", [](ConfigReader& r, const Node& n, Key k,
+                  GestureOptions& o) { r.number(n, k, 0.0, 600.0, o.attract_ease_s); }},
 };
 
 constexpr KeySpec<RenderConfig> kRenderKeys[] = {

@@ -14,7 +14,6 @@
 namespace gem::kiosk {
 namespace {
 
-
 std::string message(std::string_view text, std::string_view needle, std::string_view key,
                     std::string_view what) {
     return "t.toml:" + std::to_string(line_of(text, needle)) + ": " + std::string(key) + ": " +

@@ -95,9 +95,10 @@ TEST(ConfigShipped, WithItsExamplesSwitchedOnItStillLoadsWithoutErrors) {
 TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
-    // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures 9,
-    // attract 4, render 6, catalogue 5, snapshot 2, background 5, lighting 3, lighting.light 3.
-    EXPECT_EQ(known.size(), 53u);
+    // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
+    // 12, attract 6, render 6, catalogue 5, snapshot 2, background 5, lighting 3,
+    // lighting.light 3.
+    EXPECT_EQ(known.size(), 58u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -158,6 +159,11 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(sg.attract_deg_per_s, dg.attract_deg_per_s);
     EXPECT_EQ(sg.attract_preset_s, dg.attract_preset_s);
     EXPECT_EQ(sg.attract_stone_s, dg.attract_stone_s);
+    EXPECT_EQ(sg.attract_elevation_deg, dg.attract_elevation_deg);
+    EXPECT_EQ(sg.attract_ease_s, dg.attract_ease_s);
+    EXPECT_EQ(sg.fling_window_s, dg.fling_window_s);
+    EXPECT_EQ(sg.fling_min_deg_per_s, dg.fling_min_deg_per_s);
+    EXPECT_EQ(sg.fling_max_deg_per_s, dg.fling_max_deg_per_s);
 
     EXPECT_EQ(s.render.method, d.render.method);
     EXPECT_EQ(s.render.blend, d.render.blend);

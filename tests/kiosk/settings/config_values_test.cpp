@@ -42,12 +42,17 @@ tap = "next_preset"
 two_finger_tap = "none"
 tap_max_s = 0.4
 tap_max_move_px = 20
+fling_window_s = 0.12
+fling_min_deg_per_s = 5
+fling_max_deg_per_s = 400
 
 [attract]
 idle_s = 0
 deg_per_s = -6.5
 preset_s = 0
 stone_s = 300
+elevation_deg = 55
+ease_s = 0
 
 [render]
 method = "phong"
@@ -106,6 +111,11 @@ TEST(ConfigValues, EveryOptionKeyReachesItsField) {
     EXPECT_EQ(c.gestures.attract_deg_per_s, -6.5);
     EXPECT_EQ(c.gestures.attract_preset_s, 0.0);
     EXPECT_EQ(c.gestures.attract_stone_s, 300.0);
+    EXPECT_EQ(c.gestures.attract_elevation_deg, 55.0);
+    EXPECT_EQ(c.gestures.attract_ease_s, 0.0);
+    EXPECT_EQ(c.gestures.fling_window_s, 0.12);
+    EXPECT_EQ(c.gestures.fling_min_deg_per_s, 5.0);
+    EXPECT_EQ(c.gestures.fling_max_deg_per_s, 400.0);
 
     EXPECT_EQ(c.render.method, RenderMethod::phong);
     EXPECT_TRUE(c.render.blend);

@@ -12,7 +12,6 @@
 namespace gem::kiosk {
 namespace {
 
-
 std::string at(std::string_view text, std::string_view needle, int nth) {
     return "p.toml:" + std::to_string(line_of(text, needle, nth)) + ": ";
 }
