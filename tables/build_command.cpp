@@ -6,6 +6,7 @@
 #include <numbers>
 #include <thread>
 
+#include "budget.hpp"
 #include "commands.hpp"
 #include "progress.hpp"
 #include "stone_file.hpp"
@@ -25,6 +26,46 @@ std::string megabytes(std::uint64_t bytes) {
     return text;
 }
 
+// Prints each pilot measurement and the choice; the parameters to build with.
+Result<BuildParams> choose_under_budget(const Stone& stone, const BuildOptions& o) {
+    if (o.screen_px <= 0) return Error{"--budget needs --screen (pixels across the stone)"};
+    BudgetRequest request;
+    request.budget_delta_e = o.budget_delta_e;
+    request.screen_px = o.screen_px;
+    request.min_elevation_deg = o.min_elevation_deg;
+    request.max_jump_px = o.max_jump_px;
+    std::printf(
+        "gemtables: choosing parameters for mean ΔE00 ≤ %g at %d px across, views jumping ≤ "
+        "%g px\n",
+        o.budget_delta_e, o.screen_px, o.max_jump_px);
+    std::fflush(stdout);
+    const auto start = std::chrono::steady_clock::now();
+    Result<BudgetChoice> choice = choose_parameters(stone, request, [](const BudgetStep& s) {
+        std::printf("gemtables:   %-10s %-14s ΔE00 %6.2f  %s\n", s.parameter.c_str(),
+                    s.value.c_str(), s.delta_e, s.accepted ? "within budget" : "over");
+        std::fflush(stdout);
+    });
+    if (!choice) return Error{choice.error()};
+    const BudgetChoice& c = choice.value();
+    if (!c.met)
+        std::printf(
+            "gemtables: warning: even the most accurate candidate is over the budget (ΔE00 "
+            "%.2f); building it\n",
+            c.delta_e);
+    if (!c.jump_met)
+        std::printf("gemtables: warning: even %g° between views jumps more than %g px\n",
+                    c.spacing_deg, o.max_jump_px);
+    std::printf(
+        "gemtables: chose spacing %g° (jump %.1f px at the rim), levels %u/%u, depth %u, "
+        "threshold %g, dispersion %s: ΔE00 %.2f at a stored view, %.2f at the median %.2f° "
+        "from one (%.1f s of pilot renders)\n",
+        c.spacing_deg, c.spacing_deg * kDegree * o.screen_px / 2.0, c.params.levels.front(),
+        c.params.levels.back(), c.params.max_depth, c.params.weight_threshold,
+        c.params.dispersion ? "on" : "off", c.delta_e, c.between_delta_e, c.offset_deg,
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return c.params;
+}
+
 }  // namespace
 
 int run_build(const BuildOptions& o) {
@@ -39,6 +80,12 @@ int run_build(const BuildOptions& o) {
     params.max_depth = o.depth;
     params.weight_threshold = o.threshold;
     params.dispersion = o.dispersion;
+    if (o.budget_delta_e > 0.0) {
+        Result<BuildParams> chosen = choose_under_budget(stone, o);
+        if (!chosen) return fail(chosen.error());
+        params = chosen.value();
+        if (o.choose_only) return 0;
+    }
     Result<ViewGrid> grid = ViewGrid::build(params.grid, stone.symmetry);
     if (!grid) return fail("--spacing/--min-elevation: " + grid.error());
 

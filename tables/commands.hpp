@@ -18,6 +18,12 @@ struct BuildOptions {
     double threshold = 1e-4;
     bool dispersion = false;
     unsigned jobs = 0;  // 0: every core
+    // > 0: levels, spacing, depth, threshold and dispersion are chosen under this error
+    // budget for a stone screen_px across (budget.hpp) instead of taken from the options.
+    double budget_delta_e = 0.0;
+    int screen_px = 0;
+    double max_jump_px = 8.0;
+    bool choose_only = false;  // print the choice, build nothing
 };
 
 struct VerifyOptions {

@@ -49,7 +49,28 @@ int main(int argc, char** argv) {
     b->add_option("--threshold", build.threshold, "exit rays lighter than this are dropped")
         ->check(CLI::Range(0.0, 1.0))
         ->capture_default_str();
-    b->add_flag("--dispersion", build.dispersion, "store d(direction)/dn per exit ray (fire)");
+    CLI::Option* dispersion =
+        b->add_flag("--dispersion", build.dispersion, "store d(direction)/dn per exit ray (fire)");
+    CLI::Option* budget =
+        b->add_option("--budget", build.budget_delta_e,
+                      "choose spacing, level, depth, threshold and dispersion: the cheapest that "
+                      "keep the mean CIEDE2000 over the stone within this (measured on pilot "
+                      "views; needs --screen)")
+            ->check(CLI::Range(0.01, 100.0));
+    b->add_option("--screen", build.screen_px,
+                  "with --budget: pixels across the stone's bounding sphere on screen")
+        ->check(CLI::Range(16, 8192));
+    b->add_option("--jump", build.max_jump_px,
+                  "with --budget: largest jump (pixels at the stone's rim) when the shown view "
+                  "changes; sets the spacing")
+        ->check(CLI::Range(0.1, 1000.0))
+        ->capture_default_str();
+    b->add_flag("--choose-only", build.choose_only,
+                "with --budget: print the chosen parameters and build nothing")
+        ->needs(budget);
+    for (const char* chosen : {"--levels", "--spacing", "--depth", "--threshold"})
+        budget->excludes(b->get_option(chosen));
+    budget->excludes(dispersion);
     b->add_option("--jobs", build.jobs, "tracing threads (default: every core)")
         ->check(CLI::Range(1, 1024));
 

@@ -89,6 +89,26 @@ TEST_F(GemtablesCli, BuildInfoVerifySucceed) {
     EXPECT_NE(verify.output.find(": OK"), std::string::npos) << verify.output;
 }
 
+// --budget chooses what --levels/--spacing/--depth/--threshold/--dispersion would set, so
+// they are refused together; without --screen it cannot choose a level.
+TEST_F(GemtablesCli, BudgetNeedsAScreenAndExcludesTheParametersItChooses) {
+    const fs::path db = dir_ / "budget.gemdb";
+    const std::string base = "build " + stone_.string() + " -o " + db.string() + " --budget 3";
+    const Outcome no_screen = run(base);
+    EXPECT_NE(no_screen.status, 0);
+    EXPECT_NE(no_screen.output.find("--budget needs --screen"), std::string::npos)
+        << no_screen.output;
+    const Outcome both = run(base + " --screen 64 --depth 4");
+    EXPECT_NE(both.status, 0);
+    EXPECT_NE(both.output.find("excludes"), std::string::npos) << both.output;
+    EXPECT_FALSE(fs::exists(db));
+
+    const Outcome chosen = run(base + " --screen 32 --jump 4 --choose-only");
+    ASSERT_EQ(chosen.status, 0) << chosen.output;
+    EXPECT_NE(chosen.output.find("gemtables: chose spacing"), std::string::npos) << chosen.output;
+    EXPECT_FALSE(fs::exists(db));  // --choose-only builds nothing
+}
+
 TEST_F(GemtablesCli, VerifyFailsOnDamagedCopies) {
     const fs::path db = dir_ / "tiny.gemdb";
     ASSERT_EQ(run("build " + stone_.string() + " -o " + db.string() + " " + kTinyOptions).status,
