@@ -71,8 +71,11 @@ std::string one_stone_manifest(const std::string& name) {
 }
 
 void write_catalogue(const fs::path& dir, const std::string& name) {
+    // The database is read (and on first use built, seconds under a sanitizer) before the
+    // manifest lands, so the two files arrive well within the watcher's settle time.
+    const std::vector<std::uint8_t> database = read_bytes(tiny_database());
     write_text(dir / "catalogue.toml", one_stone_manifest(name));
-    write_bytes(dir / "stones" / "round.gemdb", read_bytes(tiny_database()));
+    write_bytes(dir / "stones" / "round.gemdb", database);
 }
 
 namespace {

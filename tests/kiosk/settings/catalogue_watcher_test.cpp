@@ -119,8 +119,9 @@ TEST(CatalogueWatcher, DamagedDatabasesAreRejectedAndTheCurrentStays) {
     StderrCapture capture;
 
     std::uint32_t view = 0;
+    const std::vector<std::uint8_t> damaged = damaged_database(&view);
     write_text(o.inbox_dir / "autumn" / "catalogue.toml", one_stone_manifest("autumn"));
-    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", damaged_database(&view));
+    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", damaged);
     ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
     EXPECT_NE(capture.text().find("catalogue 'autumn' rejected: stones/round.gemdb: view " +
                                   std::to_string(view) + " level 0: checksum mismatch (from " +
@@ -152,8 +153,9 @@ TEST(CatalogueWatcher, UnchangedRejectedDirectoryIsNotValidatedAgain) {
     const CatalogueOptions o = options_for(root, 300ms);
     auto w = start(o);
     std::uint32_t view = 0;
+    const std::vector<std::uint8_t> damaged = damaged_database(&view);
     write_text(o.inbox_dir / "autumn" / "catalogue.toml", one_stone_manifest("autumn"));
-    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", damaged_database(&view));
+    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", damaged);
     ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
     EXPECT_EQ(w->counters().validations, 1u);
     // Each rescan is a full pass over the inbox (SIGHUP); the directory is unchanged.
