@@ -153,13 +153,16 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     const std::size_t found = options_.blend ? grid.nearest_k(asked, near) : 0;
     AcquiredView second;
     double blend = 1.0;
-    // Blend only when the nearest view itself is shown (not a stand-in for it). Weights fall
-    // linearly to zero at the third view's angle, so they are continuous as views change
-    // rank: w0 ∝ a2 − a0, w1 ∝ a2 − a1.
-    if (found == 3 && near[2].angle - near[0].angle > 0.0) {
-        const double w0 = near[2].angle - near[0].angle;
-        const double w1 = near[2].angle - near[1].angle;
-        blend = w0 / (w0 + w1);
+    // Blend only when the nearest view itself is shown (not a stand-in for it). Weights
+    // w_i ∝ (a2 − a_i) / a_i: the inverse angle makes the nearest view's weight 1 on a stored
+    // direction (the view is exact there), the (a2 − a_i) factor takes the second view's weight
+    // to 0 where it trades rank with the third, so the picture stays continuous as views change
+    // rank, and equal angles (the midpoint) give equal weights.
+    const double a0 = near[0].angle, a1 = near[1].angle, a2 = near[2].angle;
+    if (found == 3 && a2 > a0) {
+        const double w0 = (a2 - a0) * a1;  // both weights multiplied by a0 · a1
+        const double w1 = (a2 - a1) * a0;
+        blend = w0 + w1 > 0.0 ? w0 / (w0 + w1) : 1.0;
         if (first.view && first.match.view == near[0].view &&
             first.match.symmetry == near[0].symmetry) {
             second = cache_->acquire_view(near[1], wanted);
