@@ -1,0 +1,42 @@
+#pragma once
+// A scene's reference frames, rendered once per view direction and shared by every method and
+// setting seen from it: the full reference, the same traced at n(D) only, and the mask of the
+// pixels compared (the stone's, less those the ring covers).
+
+#include <map>
+#include <tuple>
+#include <vector>
+
+#include "reference_images.hpp"
+#include "render/environment.hpp"
+#include "scenes.hpp"
+#include "util/result.hpp"
+
+namespace gem::accuracy {
+
+class SceneReferences {
+  public:
+    // Keeps references: scene and environments must outlive it. `gpu_env` is what the GPU
+    // frames surround the stone with, `cpu_env` what the reference does (scene_environment).
+    SceneReferences(const Scene& scene, const Environment& gpu_env, const Environment& cpu_env,
+                    int image)
+        : scene_(scene), gpu_env_(gpu_env), cpu_env_(cpu_env), image_(image) {}
+
+    struct Entry {
+        CpuFrame reference;
+        CpuFrame reference_nd;    // the same, traced at n(D) only
+        std::vector<float> mask;  // the stone's pixels, less those the ring covers
+    };
+    // Needs a current GL context (the ring's coverage is drawn on the GPU).
+    Result<const Entry*> get(const glm::dvec3& view);
+    const Environment& cpu_environment() const { return cpu_env_; }
+
+  private:
+    const Scene& scene_;
+    const Environment& gpu_env_;
+    const Environment& cpu_env_;
+    int image_;
+    std::map<std::tuple<long, long, long>, Entry> entries_;
+};
+
+}  // namespace gem::accuracy
