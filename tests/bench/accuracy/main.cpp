@@ -7,6 +7,8 @@
 // --images  where the example pictures go (default: none)
 // --cache   built databases are kept here (default: the build tree), so a re-run only renders
 // --charts  runs gnuplot on charts.gp to draw the charts into DIR (needs gnuplot)
+#include <CLI/CLI.hpp>
+
 #include <chrono>
 #include <cstdio>
 #include <cstdlib>
@@ -19,28 +21,19 @@
 int main(int argc, char** argv) {
     gem::accuracy::SweepOptions options;
     options.cache = GEM_ACCURACY_CACHE_DIR;
-    std::filesystem::path csv = "accuracy.csv";
-    std::filesystem::path charts;
-    for (int i = 1; i < argc; ++i) {
-        const std::string a = argv[i];
-        const bool has_value = i + 1 < argc;
-        if (a == "--quick") {
-            options.quick = true;
-        } else if (a == "--csv" && has_value) {
-            csv = argv[++i];
-        } else if (a == "--images" && has_value) {
-            options.images = argv[++i];
-        } else if (a == "--cache" && has_value) {
-            options.cache = argv[++i];
-        } else if (a == "--charts" && has_value) {
-            charts = argv[++i];
-        } else {
-            std::fprintf(stderr,
-                         "usage: bench_accuracy [--quick] [--csv FILE] [--images DIR] "
-                         "[--cache DIR] [--charts DIR]\n");
-            return 2;
-        }
-    }
+    std::string csv = "accuracy.csv";
+    std::string charts;
+    std::string images;
+    std::string cache = options.cache.string();
+    CLI::App app{"bench_accuracy: the speed-against-accuracy sweep (docs/accuracy.md)"};
+    app.add_flag("--quick", options.quick, "a smoke run: the face-up diamond, 128 px");
+    app.add_option("--csv", csv, "where the rows go")->capture_default_str();
+    app.add_option("--images", images, "where the example pictures go (default: none)");
+    app.add_option("--cache", cache, "built databases are kept here")->capture_default_str();
+    app.add_option("--charts", charts, "draw the charts here with gnuplot");
+    CLI11_PARSE(app, argc, argv);
+    options.cache = cache;
+    if (!images.empty()) options.images = images;
     if (options.quick) {
         options.image = 128;
         options.frames = 2;
@@ -70,8 +63,8 @@ int main(int argc, char** argv) {
         std::filesystem::create_directories(charts);
         const std::string scenes =
             options.quick ? "; sweep_scene='diamond-faceup'; path_scenes='diamond-faceup'" : "";
-        const std::string command = "gnuplot -e \"csv='" + csv.string() + "'; out='" +
-                                    charts.string() + "'" + scenes + "\" " + GEM_ACCURACY_CHARTS;
+        const std::string command = "gnuplot -e \"csv='" + csv + "'; out='" + charts + "'" +
+                                    scenes + "\" " + GEM_ACCURACY_CHARTS;
         if (std::system(command.c_str()) != 0) {
             std::fprintf(stderr, "bench_accuracy: gnuplot failed: %s\n", command.c_str());
             return 1;
