@@ -56,10 +56,17 @@ Result<TableMethod> TableMethod::make(std::shared_ptr<const Database> database,
 
 std::uint32_t TableMethod::level_for(double pixels_across) const {
     const auto& levels = database_->params().levels;
+    std::uint32_t level = static_cast<std::uint32_t>(levels.size() - 1);
     for (std::uint32_t i = 0; i < levels.size(); ++i) {
-        if (levels[i] >= pixels_across) return i;
+        if (levels[i] >= pixels_across) {
+            level = i;
+            break;
+        }
     }
-    return static_cast<std::uint32_t>(levels.size() - 1);
+    if (options_.max_level >= 0) {
+        level = std::min(level, static_cast<std::uint32_t>(options_.max_level));
+    }
+    return level;
 }
 
 Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acquired,

@@ -22,6 +22,8 @@ struct TableOptions {
     // Headless renders (tests, gemrender) wait until the views they want are decoded; the
     // kiosk never does and shows what is resident.
     bool wait_for_views = false;
+    // The highest level shown (a cheaper, coarser view for a slow GPU); -1: no cap.
+    int max_level = -1;
     ViewCacheOptions cache;
 };
 

@@ -9,6 +9,7 @@
 #include <limits>
 #include <numbers>
 
+#include "app/method_probe_run.hpp"
 #include "app/process_info.hpp"
 #include "app/snapshot.hpp"
 #include "app/start_view.hpp"
@@ -32,6 +33,7 @@ gpu::Method to_gpu(RenderMethod method) {
         case RenderMethod::phong:
             return gpu::Method::phong;
         case RenderMethod::table:
+        case RenderMethod::automatic:  // until the probe has chosen
             break;
     }
     return gpu::Method::table;
@@ -272,6 +274,7 @@ void KioskSession::rebuild_scene(double now_s) {
     scene_stale_ = false;
     scene_.reset();  // the old scene's GL objects go before the new one's are made
     if (!selection_->has_stone()) return;
+    if (config_.render.method == RenderMethod::automatic) choose_render_method();
     auto made = StoneScene::make(selection_->stone(), selection_->look(), render_);
     if (!made) {
         log_error(made.error());
@@ -279,6 +282,50 @@ void KioskSession::rebuild_scene(double now_s) {
     }
     scene_ = std::move(made).value();
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
+}
+
+void KioskSession::choose_render_method() {
+    // Once per session, before the first frame: a catalogue switch or a new stone keeps the
+    // choice, since the cost is set by the picture's pixels and the stone's share of them (the
+    // start view frames every ring the same way), and a probe is a pause of seconds. A display
+    // reopened at another size keeps it too: once frames are on screen the systemd watchdog
+    // (10 s) would not survive a probe on a slow GPU.
+    const glm::ivec2 size = display_->picture_size();
+    if (probed_size_ == size) return;
+    if (probed_size_ && first_frame_shown_) {
+        log_info("render.method auto: keeping the choice measured at " +
+                 std::to_string(probed_size_->x) + "x" + std::to_string(probed_size_->y));
+        probed_size_ = size;
+        return;
+    }
+    const double budget_ms = frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
+                                             config_.render.auto_headroom);
+    if (!std::isfinite(budget_ms)) {
+        // No target rate (a headless display drawing as fast as it can): nothing to hold, so
+        // the most accurate candidate without spending seconds measuring it.
+        probed_size_ = size;
+        render_ = apply_candidate(render_, method_ladder(0).front());
+        log_info("render.method auto: no frame rate to hold; using " +
+                 method_ladder(0).front().name);
+        return;
+    }
+    auto probe = probe_methods(selection_->stone(), selection_->look(), render_, *picture_,
+                               kStartView, budget_ms);
+    if (!probe) {
+        log_error("render.method auto: no probe (" + probe.error() + "); using table");
+        return;
+    }
+    const ProbeResult& r = probe.value();
+    probed_size_ = size;
+    render_ = apply_candidate(render_, r.candidates[r.choice.index]);
+    char cost[96];
+    std::snprintf(cost, sizeof cost, " (%dx%d, probe took %.2f s)", size.x, size.y, r.seconds);
+    const std::string line = describe_choice(r.candidates, r.choice) + cost;
+    if (r.choice.fits) {
+        log_info(line);
+    } else {
+        log_warning(line + "; no method holds the frame rate, using the fastest");
+    }
 }
 
 double KioskSession::draw_stone(double now_s, FrameRecord& record) {

@@ -59,6 +59,8 @@ class KioskSession {
     Result<bool> make_gpu_objects();
     void switch_catalogue(Catalogue catalogue, double now_s);
     void rebuild_scene(double now_s);
+    // render.method = auto: measures the candidates and sets render_ (method_probe.hpp).
+    void choose_render_method();
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     double draw_stone(double now_s, FrameRecord& record);
@@ -86,6 +88,7 @@ class KioskSession {
     std::unique_ptr<StoneScene> scene_;
     bool scene_stale_ = true;
     RenderChoice render_;
+    std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
 
     ServiceNotifier notifier_;
     bool first_frame_shown_ = false;

@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "scene/scene.hpp"
 #include "tables/reader.hpp"
 
 namespace gem::kiosk {
@@ -69,8 +70,12 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     if (stone.colour) setup.material.body_colour = *stone.colour;
     if (stone.absorption_per_mm) setup.material.absorption_per_mm = *stone.absorption_per_mm;
     setup.shading.lights = look.lights;
+    // The phong baseline draws the stone with opacity 1 − α; the physical model's α = 1 would
+    // leave only the ring on screen. 0.8 is the scene default gemrender uses (scene/scene.hpp).
+    if (render.method == gpu::Method::phong) setup.shading.alpha = Scene{}.alpha;
     setup.trace.max_depth = render.depth;
     setup.table.blend = render.blend;
+    setup.table.max_level = render.max_level;
     setup.table.cache.memory_bytes = render.cache_bytes;
     setup.table.wait_for_views = render.wait_for_views;
     setup.environment = &scene->environment_;

@@ -63,6 +63,8 @@ const char* to_string(RenderMethod method) {
             return "trace";
         case RenderMethod::phong:
             return "phong";
+        case RenderMethod::automatic:
+            return "auto";
     }
     return "?";
 }

@@ -22,7 +22,9 @@ namespace gem::kiosk {
 inline constexpr const char* kDefaultConfigFile = "/etc/gemkiosk/gemkiosk.toml";
 
 // [render]: how the stone is shaded (DESIGN.md, "Methods side by side").
-enum class RenderMethod { table, trace, phong };
+// automatic ("auto"): the most accurate of table blend, table nearest, table one level lower and
+// phong that holds the frame rate, measured at start (app/method_probe.hpp).
+enum class RenderMethod { table, trace, phong, automatic };
 const char* to_string(RenderMethod method);
 
 struct RenderConfig {
@@ -32,6 +34,9 @@ struct RenderConfig {
     int depth = 8;             // trace: internal ray segments followed per branch
     int view_cache_mb = 256;   // table: memory for decoded views
     double frame_rate_hz = 0;  // frames drawn per second at most; 0: every refresh
+    // auto: the share of a frame period the stone may take (the rest is left for compositing,
+    // presenting and the odd slow frame).
+    double auto_headroom = 0.8;
 };
 
 // [catalogue]: where catalogues live and arrive (the main program hands these to the catalogue

@@ -171,9 +171,9 @@ constexpr KeySpec<RenderConfig> kRenderKeys[] = {
     {"method",
      [](ConfigReader& r, const Node& n, Key k, RenderConfig& o) {
          std::size_t i = 0;
-         if (!r.choice(n, k, {"table", "trace", "phong"}, i)) return;
+         if (!r.choice(n, k, {"table", "trace", "phong", "auto"}, i)) return;
          constexpr RenderMethod methods[] = {RenderMethod::table, RenderMethod::trace,
-                                             RenderMethod::phong};
+                                             RenderMethod::phong, RenderMethod::automatic};
          o.method = methods[i];
      }},
     {"blend",
@@ -186,6 +186,8 @@ constexpr KeySpec<RenderConfig> kRenderKeys[] = {
                          RenderConfig& o) { r.integer(n, k, 16, 65536, o.view_cache_mb); }},
     {"frame_rate_hz", [](ConfigReader& r, const Node& n, Key k,
                          RenderConfig& o) { r.number(n, k, 0.0, 1000.0, o.frame_rate_hz); }},
+    {"auto_headroom", [](ConfigReader& r, const Node& n, Key k,
+                         RenderConfig& o) { r.number(n, k, 0.1, 1.0, o.auto_headroom); }},
 };
 
 constexpr KeySpec<CatalogueConfig> kCatalogueKeys[] = {

@@ -207,7 +207,8 @@ TEST(ConfigErrors, UnknownChoicesNameTheChoices) {
                 "expected \"display\" or one of 0, 90, 180, 270"),
         message(text, "tap = \"double\"", "gestures.tap",
                 "expected one of \"none\", \"next_stone\", \"next_preset\""),
-        message(text, "method", "render.method", "expected one of \"table\", \"trace\", \"phong\""),
+        message(text, "method", "render.method",
+                "expected one of \"table\", \"trace\", \"phong\", \"auto\""),
     };
     EXPECT_EQ(load.errors, expected);
     EXPECT_EQ(load.config.log_level, LogLevel::info);

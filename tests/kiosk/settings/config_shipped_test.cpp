@@ -96,9 +96,9 @@ TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
     // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
-    // 12, attract 6, render 6, catalogue 5, snapshot 2, background 5, lighting 3,
+    // 12, attract 6, render 7, catalogue 5, snapshot 2, background 5, lighting 3,
     // lighting.light 3.
-    EXPECT_EQ(known.size(), 58u);
+    EXPECT_EQ(known.size(), 59u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -171,6 +171,7 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(s.render.depth, d.render.depth);
     EXPECT_EQ(s.render.view_cache_mb, d.render.view_cache_mb);
     EXPECT_EQ(s.render.frame_rate_hz, d.render.frame_rate_hz);
+    EXPECT_EQ(s.render.auto_headroom, d.render.auto_headroom);
 
     EXPECT_EQ(s.catalogue.default_dir, d.catalogue.default_dir);
     EXPECT_EQ(s.catalogue.state_dir, d.catalogue.state_dir);

@@ -61,6 +61,7 @@ cube_face = 1024
 depth = 12
 view_cache_mb = 64
 frame_rate_hz = 30
+auto_headroom = 0.5
 
 [catalogue]
 default_dir = "current"
@@ -123,6 +124,7 @@ TEST(ConfigValues, EveryOptionKeyReachesItsField) {
     EXPECT_EQ(c.render.depth, 12);
     EXPECT_EQ(c.render.view_cache_mb, 64);
     EXPECT_EQ(c.render.frame_rate_hz, 30.0);
+    EXPECT_EQ(c.render.auto_headroom, 0.5);
 
     // Relative paths are the config folder's; absolute ones stay as they are.
     EXPECT_EQ(c.catalogue.default_dir, "/etc/gemkiosk/current");
@@ -172,6 +174,22 @@ TEST(ConfigValues, LoadConfigNamesTheFileInErrors) {
     const ConfigLoad load = load_config(file);
     EXPECT_EQ(load.errors, std::vector<std::string>{file.string() +
                                                     ":4: render.depth: must be between 1 and 64"});
+}
+
+TEST(ConfigValues, AutoMethodAndHeadroom) {
+    const ConfigLoad load =
+        parse_config("[render]\nmethod = \"auto\"\nauto_headroom = 0.65\n", "t.toml", "");
+    EXPECT_TRUE(load.errors.empty());
+    EXPECT_EQ(load.config.render.method, RenderMethod::automatic);
+    EXPECT_EQ(load.config.render.auto_headroom, 0.65);
+    EXPECT_STREQ(to_string(RenderMethod::automatic), "auto");
+}
+
+TEST(ConfigValues, HeadroomOutOfRangeKeepsItsDefault) {
+    const ConfigLoad load = parse_config("[render]\nauto_headroom = 1.5\n", "t.toml", "");
+    ASSERT_EQ(load.errors.size(), 1u);
+    EXPECT_NE(load.errors.front().find("render.auto_headroom"), std::string::npos);
+    EXPECT_EQ(load.config.render.auto_headroom, 0.8);
 }
 
 }  // namespace

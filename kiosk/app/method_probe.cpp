@@ -1,0 +1,95 @@
+#include "app/method_probe.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <limits>
+
+namespace gem::kiosk {
+
+std::vector<MethodCandidate> method_ladder(int needed_level) {
+    std::vector<MethodCandidate> ladder;
+    ladder.push_back({gpu::Method::table, true, -1, "table blend"});
+    ladder.push_back({gpu::Method::table, false, -1, "table nearest"});
+    if (needed_level > 0) {
+        ladder.push_back({gpu::Method::table, false, needed_level - 1,
+                          "table nearest level " + std::to_string(needed_level - 1)});
+    }
+    ladder.push_back({gpu::Method::phong, false, -1, "phong"});
+    return ladder;
+}
+
+std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms) {
+    std::erase_if(frame_ms, [](double t) { return !std::isfinite(t) || t < 0.0; });
+    if (frame_ms.empty()) return std::nullopt;
+    std::sort(frame_ms.begin(), frame_ms.end());
+    // Nearest rank: the smallest value with at least 90 % of the values at or below it.
+    const auto rank =
+        static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(frame_ms.size())));
+    return frame_ms[std::max<std::size_t>(rank, 1) - 1];
+}
+
+MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
+                           double budget_ms) {
+    MethodChoice choice;
+    choice.budget_ms = budget_ms;
+    const std::size_t n = frame_ms_per_candidate.size();
+    choice.index = n > 0 ? n - 1 : 0;
+    double fastest = std::numeric_limits<double>::infinity();
+    std::optional<std::size_t> fastest_index;
+    for (std::size_t i = 0; i < n; ++i) {
+        choice.statistic_ms.push_back(frame_time_statistic_ms(frame_ms_per_candidate[i]));
+    }
+    for (std::size_t i = 0; i < n; ++i) {
+        const auto& s = choice.statistic_ms[i];
+        if (!s) continue;
+        if (*s <= budget_ms) {
+            choice.index = i;
+            choice.fits = true;
+            choice.valid = true;
+            return choice;
+        }
+        if (*s < fastest) {  // strict: the earlier, more accurate one keeps a tie
+            fastest = *s;
+            fastest_index = i;
+        }
+    }
+    if (fastest_index) {
+        choice.index = *fastest_index;
+        choice.valid = true;
+    }
+    return choice;
+}
+
+double frame_budget_ms(double frame_rate_hz, double refresh_hz, double headroom) {
+    const double rate = frame_rate_hz > 0.0 ? frame_rate_hz : refresh_hz;
+    if (!(rate > 0.0) || !std::isfinite(rate)) return std::numeric_limits<double>::infinity();
+    return headroom * 1000.0 / rate;
+}
+
+std::string describe_choice(const std::vector<MethodCandidate>& candidates,
+                            const MethodChoice& choice) {
+    std::string line;
+    char number[48];
+    for (std::size_t i = 0; i < candidates.size(); ++i) {
+        if (!line.empty()) line += ", ";
+        line += candidates[i].name + " ";
+        const bool measured = i < choice.statistic_ms.size() && choice.statistic_ms[i];
+        if (measured) {
+            std::snprintf(number, sizeof number, "%.1f ms", *choice.statistic_ms[i]);
+            line += number;
+        } else {
+            line += "not measured";
+        }
+    }
+    if (std::isfinite(choice.budget_ms)) {
+        std::snprintf(number, sizeof number, "%.1f ms", choice.budget_ms);
+    } else {
+        std::snprintf(number, sizeof number, "unlimited");
+    }
+    std::string chosen = choice.index < candidates.size() ? candidates[choice.index].name : "?";
+    return "render.method auto: p90 frame times " + line + "; budget " + number + "; using " +
+           chosen;
+}
+
+}  // namespace gem::kiosk

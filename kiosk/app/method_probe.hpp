@@ -1,0 +1,63 @@
+#pragma once
+// render.method = "auto": the kiosk measures itself once at start and keeps the most accurate
+// rendering method that holds its frame rate. This file is the choice alone, free of GL, so it
+// is tested on numbers: the candidates in order from the most accurate to the cheapest, each
+// with the frame times a short probe measured, and the frame budget. method_probe_run.hpp does
+// the measuring.
+
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "gpu/frame_renderer.hpp"
+
+namespace gem::kiosk {
+
+// One way to draw the stone, as the probe tries it.
+struct MethodCandidate {
+    gpu::Method method = gpu::Method::table;
+    bool blend = false;
+    int max_level = -1;  // table: highest ray-table level shown; -1: the level the size needs
+    std::string name;    // for the log line, e.g. "table blend"
+};
+
+// The ladder the probe walks: table blend at the needed level, table nearest, table nearest one
+// level lower (only when `needed_level` > 0, else it would repeat the one before), phong.
+// Trace is left out: it is slower than table nearest at every size measured (README,
+// "Figures"), so it could only be chosen where table blend would also fit.
+std::vector<MethodCandidate> method_ladder(int needed_level);
+
+// The statistic a candidate is judged by: the 90th percentile of its frame times (nearest
+// rank, so it is one of the measured values). A median would pass a method that streams a new
+// view every few frames and misses the budget on those frames: a visible stutter in every
+// turn. p90 over a handful of frames is close to the slowest frame without being set by one
+// outlier in a run of ten or more. Non-finite and negative times (a failed frame) are dropped;
+// with none left the candidate has no statistic.
+std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms);
+
+struct MethodChoice {
+    std::size_t index = 0;                            // into the candidates
+    bool fits = false;                                // its statistic is within the budget
+    std::vector<std::optional<double>> statistic_ms;  // per candidate, as judged
+    double budget_ms = 0.0;                           // after headroom
+    bool valid = false;  // false: no candidate had a usable measurement
+};
+
+// budget_ms = headroom / target rate: the share of a frame period the stone may take (the rest
+// goes to compositing, the cross-fade and presenting). The FIRST candidate whose statistic is
+// within the budget wins; if none is, the one with the smallest statistic (the earlier one on a
+// tie). A candidate without a usable measurement is never chosen; when no candidate has one the
+// choice is invalid and index points at the last, cheapest candidate.
+MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
+                           double budget_ms);
+
+// The frame budget in ms: headroom × 1000 / rate, rate = render.frame_rate_hz when positive,
+// else the display's refresh; no positive rate (a headless display drawing as fast as it can)
+// gives an unlimited budget, so the most accurate candidate wins.
+double frame_budget_ms(double frame_rate_hz, double refresh_hz, double headroom);
+
+// One line naming every candidate, its statistic and the choice, for the journal.
+std::string describe_choice(const std::vector<MethodCandidate>& candidates,
+                            const MethodChoice& choice);
+
+}  // namespace gem::kiosk

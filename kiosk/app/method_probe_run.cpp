@@ -1,0 +1,116 @@
+#include "app/method_probe_run.hpp"
+
+#include <GLES3/gl3.h>
+
+#include <chrono>
+#include <cmath>
+
+#include "render/camera.hpp"
+
+namespace gem::kiosk {
+
+namespace {
+
+double seconds_now() {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
+        .count();
+}
+
+Result<Camera> probe_camera(const ViewState& start, double turn_deg, double radius_mm,
+                            const gpu::RenderTarget& target) {
+    CameraSettings settings;
+    settings.azimuth_deg = start.azimuth_deg + turn_deg;
+    settings.elevation_deg = start.elevation_deg;
+    settings.roll_deg = start.roll_deg;
+    settings.zoom = start.zoom;
+    return Camera::make(settings, radius_mm, target.width(), target.height());
+}
+
+// Times frames of one scene; stops once more frames missed the budget than p90 allows.
+std::vector<double> measure(StoneScene& scene, gpu::RenderTarget& target, const ViewState& start,
+                            double budget_ms, const ProbeOptions& options) {
+    gpu::FrameRenderer& renderer = scene.renderer();
+    const int total = options.warmup_frames + options.frames;
+    const int allowed_misses =
+        options.frames - static_cast<int>(std::ceil(0.9 * static_cast<double>(options.frames)));
+    std::vector<double> times;
+    int misses = 0;
+    glm::dvec3 last_forward(0.0);
+    const double frame_s = std::isfinite(budget_ms) ? budget_ms / 1000.0 : 1.0 / 60.0;
+    for (int i = 0; i < total; ++i) {
+        auto camera =
+            probe_camera(start, options.turn_deg_per_frame * i, renderer.scene_radius_mm(), target);
+        if (!camera) break;
+        target.bind();
+        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const auto begin = std::chrono::steady_clock::now();
+        if (gpu::TableMethod* table = renderer.table()) {
+            // As the kiosk's draw does: the turn's angular velocity lets the cache decode
+            // ahead, so the probe streams the way a drag does.
+            const glm::dvec3 forward = camera.value().forward();
+            const glm::dvec3 omega =
+                i > 0 ? glm::cross(last_forward, forward) / frame_s : glm::dvec3(0.0);
+            last_forward = forward;
+            table->cache().prefetch(-forward, omega,
+                                    table->level_for(table->database().camera().field_mm /
+                                                     camera.value().pixel_size()));
+        }
+        auto stats = renderer.render(camera.value(), true);
+        const double ms =
+            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
+                .count();
+        if (i < options.warmup_frames) continue;
+        // A failed frame is recorded as not-a-number: choose_method drops it.
+        times.push_back(stats ? ms : std::nan(""));
+        if (stats && ms > budget_ms && ++misses > allowed_misses) break;
+    }
+    return times;
+}
+
+}  // namespace
+
+RenderChoice apply_candidate(RenderChoice base, const MethodCandidate& candidate) {
+    base.method = candidate.method;
+    base.blend = candidate.blend;
+    base.max_level = candidate.max_level;
+    return base;
+}
+
+Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice& look,
+                                  const RenderChoice& base, gpu::RenderTarget& target,
+                                  const ViewState& start, double budget_ms,
+                                  const ProbeOptions& options) {
+    const double began_s = seconds_now();
+    ProbeResult result;
+    // The first rung decides how many rungs there are: the level the stone's size needs.
+    std::vector<MethodCandidate> ladder = method_ladder(0);
+    auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
+    if (!first) return Error{first.error()};
+    int needed_level = 0;
+    if (gpu::TableMethod* table = first.value()->renderer().table()) {
+        auto camera = probe_camera(start, 0.0, first.value()->renderer().scene_radius_mm(), target);
+        if (camera) {
+            needed_level = static_cast<int>(table->level_for(table->database().camera().field_mm /
+                                                             camera.value().pixel_size()));
+        }
+    }
+    result.candidates = method_ladder(needed_level);
+    result.frame_ms.resize(result.candidates.size());
+    std::unique_ptr<StoneScene> scene = std::move(first).value();
+    for (std::size_t i = 0; i < result.candidates.size(); ++i) {
+        if (i > 0) {
+            scene.reset();  // one scene's GL objects at a time
+            auto made = StoneScene::make(stone, look, apply_candidate(base, result.candidates[i]));
+            if (!made) continue;  // never measured, never chosen
+            scene = std::move(made).value();
+        }
+        result.frame_ms[i] = measure(*scene, target, start, budget_ms, options);
+        result.choice = choose_method(result.frame_ms, budget_ms);
+        if (result.choice.fits) break;
+    }
+    result.seconds = seconds_now() - began_s;
+    return result;
+}
+
+}  // namespace gem::kiosk
