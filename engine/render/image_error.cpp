@@ -43,7 +43,9 @@ Lab lab_of_codes(const std::uint8_t* rgb) {
     return {out.L, out.a, out.b};
 }
 
-bool is_stone(const std::uint8_t* rgba) { return rgba[3] >= 128; }
+bool is_stone(const std::uint8_t* rgba) {
+    return rgba[3] >= 128;
+}
 
 }  // namespace
 
@@ -77,9 +79,8 @@ Result<ImageError> compare_images(const Image& test, const Image& reference,
                                   const ErrorOptions& options) {
     if (test.width != reference.width || test.height != reference.height)
         return Error("compare_images: sizes differ (" + std::to_string(test.width) + "×" +
-                     std::to_string(test.height) + " against " +
-                     std::to_string(reference.width) + "×" + std::to_string(reference.height) +
-                     ")");
+                     std::to_string(test.height) + " against " + std::to_string(reference.width) +
+                     "×" + std::to_string(reference.height) + ")");
     const std::vector<std::uint8_t> x = to_srgb8(test, 4);
     const std::vector<std::uint8_t> y = to_srgb8(reference, 4);
     const std::vector<float> map = delta_e_map(test, reference);

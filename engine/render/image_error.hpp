@@ -26,12 +26,12 @@ struct ErrorOptions {
 };
 
 struct ImageError {
-    double psnr_db = 0.0;          // infinity when the 8-bit images are identical
-    double delta_e_mean = 0.0;     // CIEDE2000, mean over the compared pixels
-    double delta_e_p99 = 0.0;      // its 99th percentile (nearest rank)
+    double psnr_db = 0.0;       // infinity when the 8-bit images are identical
+    double delta_e_mean = 0.0;  // CIEDE2000, mean over the compared pixels
+    double delta_e_p99 = 0.0;   // its 99th percentile (nearest rank)
     double delta_e_max = 0.0;
-    double share_visible = 0.0;    // share of compared pixels with ΔE00 > visible_delta_e
-    std::size_t pixels = 0;        // pixels compared
+    double share_visible = 0.0;  // share of compared pixels with ΔE00 > visible_delta_e
+    std::size_t pixels = 0;      // pixels compared
 };
 
 // Errors: images of different sizes, or no pixel to compare.

@@ -102,7 +102,7 @@ TEST(ImageError, HeatMapRunsBlackToWhite) {
     EXPECT_EQ(map.pixels[0], glm::vec4(0.0f, 0.0f, 0.0f, 1.0f));
     EXPECT_NEAR(map.pixels[2].x, 1.0f, 1e-6);
     EXPECT_NEAR(map.pixels[2].z, 1.0f, 1e-6);
-    EXPECT_EQ(map.pixels[3], map.pixels[2]);  // clipped at full scale
+    EXPECT_EQ(map.pixels[3], map.pixels[2]);      // clipped at full scale
     EXPECT_GT(map.pixels[1].x, map.pixels[1].z);  // halfway is red-yellow, not white
 }
 
