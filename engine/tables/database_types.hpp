@@ -51,4 +51,8 @@ struct DecodedView {
     std::vector<glm::vec3> dir_dn;  // empty unless the database stores dispersion
 };
 
+// Pixel `pixel` of a decoded view as a ray-list again (what the tracer gave, after
+// quantisation), so the CPU shader can shade what a table holds.
+RayList ray_list_at(const DecodedView& view, std::size_t pixel);
+
 }  // namespace gem

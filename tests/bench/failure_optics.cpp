@@ -128,22 +128,7 @@ void codec_panel(const std::filesystem::path& out) {
     Image exact(kSide, kSide), decoded(kSide, kSide);
     for (std::size_t p = 0; p < lists.size(); ++p) {
         if (!lists[p].hit) continue;
-        RayList d;
-        d.hit = true;
-        for (std::uint32_t r = view.ray_offset[p]; r < view.ray_offset[p] + view.ray_count[p];
-             ++r) {
-            const TracedRay ray{glm::dvec3(view.position[r]),
-                                glm::dvec3(view.direction[r]),
-                                view.weight[r],
-                                view.path_mm[r],
-                                view.bounces[r],
-                                view.facet[r]};
-            if (r == view.ray_offset[p]) {
-                d.reflected = ray;
-            } else {
-                d.exits.push_back(ray);
-            }
-        }
+        const RayList d = ray_list_at(view, p);
         const int x = int(p % kSide), y = int(p / kSide);
         exact.at(x, y) = glm::vec4(glm::vec3(shader.shade(lists[p])), 1.0f);
         decoded.at(x, y) = glm::vec4(glm::vec3(shader.shade(d)), 1.0f);

@@ -145,22 +145,7 @@ TEST(FailureOpticsQuantiseLimits, ShadedColourAfterTheCodec) {
     double worst_share = 0.0, longest_path = 0.0;
     for (std::size_t p = 0; p < lists.size(); ++p) {
         if (!lists[p].hit) continue;
-        RayList decoded;
-        decoded.hit = true;
-        for (std::uint32_t r = view.ray_offset[p]; r < view.ray_offset[p] + view.ray_count[p];
-             ++r) {
-            const TracedRay ray{glm::dvec3(view.position[r]),
-                                glm::dvec3(view.direction[r]),
-                                view.weight[r],
-                                view.path_mm[r],
-                                view.bounces[r],
-                                view.facet[r]};
-            if (r == view.ray_offset[p]) {
-                decoded.reflected = ray;
-            } else {
-                decoded.exits.push_back(ray);
-            }
-        }
+        const RayList decoded = ray_list_at(view, p);
         ASSERT_EQ(decoded.exits.size(), lists[p].exits.size());
         glm::dvec3 bound(1e-7);
         auto add = [&](const TracedRay& e) {
