@@ -121,7 +121,8 @@ Result<Camera> FailureScene::camera(const glm::dvec3& view, double zoom, int siz
     return Camera::make(s, bounding_radius(stone().vertices), size, size);
 }
 
-Result<TableRender> FailureScene::table(const Camera& camera, bool blend, bool background) {
+// A bound, cleared target of the camera's size, with the environment drawn when asked.
+Result<gpu::RenderTarget> FailureScene::begin(const Camera& camera, bool background) {
     auto target = gpu::RenderTarget::make(camera.width(), camera.height());
     if (!target) return Error{target.error()};
     target.value().bind();
@@ -131,6 +132,12 @@ Result<TableRender> FailureScene::table(const Camera& camera, bool blend, bool b
         auto drawn = background_->draw(camera, *cube_, std::nullopt);
         if (!drawn) return Error{drawn.error()};
     }
+    return target;
+}
+
+Result<TableRender> FailureScene::table(const Camera& camera, bool blend, bool background) {
+    auto target = begin(camera, background);
+    if (!target) return Error{target.error()};
     TableRender out;
     auto drawn = (blend ? blend_ : nearest_)->draw(frame(camera), &out.stats);
     if (!drawn) return Error{drawn.error()};
@@ -139,15 +146,8 @@ Result<TableRender> FailureScene::table(const Camera& camera, bool blend, bool b
 }
 
 Result<Image> FailureScene::trace(const Camera& camera, bool background) {
-    auto target = gpu::RenderTarget::make(camera.width(), camera.height());
+    auto target = begin(camera, background);
     if (!target) return Error{target.error()};
-    target.value().bind();
-    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (background) {
-        auto drawn = background_->draw(camera, *cube_, std::nullopt);
-        if (!drawn) return Error{drawn.error()};
-    }
     auto drawn = trace_->draw(frame(camera), tables::table_trace_settings(database_->params()));
     if (!drawn) return Error{drawn.error()};
     return target.value().read();

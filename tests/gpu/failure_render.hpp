@@ -10,6 +10,7 @@
 
 #include "gpu/background_pass.hpp"
 #include "gpu/environment_cube.hpp"
+#include "gpu/render_target.hpp"
 #include "gpu/table_method.hpp"
 #include "gpu/trace_method.hpp"
 #include "render/camera.hpp"
@@ -61,6 +62,7 @@ class FailureScene {
     Result<Camera> camera(const glm::dvec3& view, double zoom, int size) const;
 
   private:
+    Result<gpu::RenderTarget> begin(const Camera& camera, bool background);
     FailureScene() = default;
     gpu::StoneFrame frame(const Camera& camera) const;
 
