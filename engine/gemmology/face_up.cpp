@@ -36,6 +36,30 @@ double girdle_radius(const Stone& stone) {
     return r;
 }
 
+// Adds one pixel's or one view's figures to `t` (both carry the same named fields).
+template <class Figures>
+void add_figures(FaceUpTotals& t, const Figures& f) {
+    t.light_return += f.light_return;
+    t.surface_return += f.surface_return;
+    for (std::size_t z = 0; z < t.zone.size(); ++z) t.zone[z] += f.zone[z];
+    t.truncated += f.truncated;
+    t.fire_deg += f.fire_deg;
+}
+
+// Sums over n items to means; the mean spread is fire over the lit exit weight behind it.
+void finish_means(FaceUpTotals& t, double n, double spread_weight) {
+    if (n > 0.0) {
+        t.light_return /= n;
+        t.surface_return /= n;
+        for (double& z : t.zone) z /= n;
+        t.truncated /= n;
+        t.mean_spread_deg = spread_weight > 0.0 ? t.fire_deg / spread_weight : 0.0;
+        t.fire_deg /= n;
+    }
+    t.leakage = t.zone[static_cast<std::size_t>(SkyZone::below)];
+    t.hemisphere_return = t.zone[0] + t.zone[1] + t.zone[2];  // low sky, high sky, head
+}
+
 }  // namespace
 
 FaceUpAnalysis analyse_face_up(const Stone& stone, const FaceUpSettings& settings) {
@@ -107,24 +131,10 @@ FaceUpAnalysis analyse_face_up(const Stone& stone, const FaceUpSettings& setting
     for (const FaceUpPixel& px : a.pixels) {
         if (!px.stone) continue;
         ++t.stone_pixels;
-        t.light_return += px.light_return;
-        t.surface_return += px.surface_return;
-        for (int z = 0; z < kSkyZoneCount; ++z) t.zone[std::size_t(z)] += px.zone[std::size_t(z)];
-        t.truncated += px.truncated;
-        t.fire_deg += px.fire_deg;
+        add_figures(t, px);
         spread_weight += px.spread_weight;
     }
-    if (t.stone_pixels > 0) {
-        const double n = t.stone_pixels;
-        t.light_return /= n;
-        t.surface_return /= n;
-        for (double& z : t.zone) z /= n;
-        t.truncated /= n;
-        t.mean_spread_deg = spread_weight > 0.0 ? t.fire_deg / spread_weight : 0.0;
-        t.fire_deg /= n;
-    }
-    t.leakage = t.zone[static_cast<std::size_t>(SkyZone::below)];
-    t.hemisphere_return = t.zone[0] + t.zone[1] + t.zone[2];  // low sky, high sky, head
+    finish_means(t, t.stone_pixels, spread_weight);
     return a;
 }
 
@@ -138,24 +148,13 @@ FaceUpTotals tilt_averaged_totals(const Stone& stone, const FaceUpSettings& sett
         s.tilt_azimuth_deg = v.azimuth_deg;
         const FaceUpTotals t = analyse_face_up(stone, s).totals;
         mean.stone_pixels += t.stone_pixels;
-        mean.light_return += t.light_return;
-        mean.surface_return += t.surface_return;
-        for (std::size_t z = 0; z < t.zone.size(); ++z) mean.zone[z] += t.zone[z];
-        mean.truncated += t.truncated;
-        mean.fire_deg += t.fire_deg;
+        add_figures(mean, t);
         if (t.mean_spread_deg > 0.0) spread_weight += t.fire_deg / t.mean_spread_deg;
     }
     if (views.empty()) return mean;
     const double n = static_cast<double>(views.size());
     mean.stone_pixels = static_cast<int>(mean.stone_pixels / n);
-    mean.light_return /= n;
-    mean.surface_return /= n;
-    for (double& z : mean.zone) z /= n;
-    mean.truncated /= n;
-    mean.mean_spread_deg = spread_weight > 0.0 ? mean.fire_deg / spread_weight : 0.0;
-    mean.fire_deg /= n;
-    mean.leakage = mean.zone[static_cast<std::size_t>(SkyZone::below)];
-    mean.hemisphere_return = mean.zone[0] + mean.zone[1] + mean.zone[2];
+    finish_means(mean, n, spread_weight);
     return mean;
 }
 
