@@ -74,7 +74,13 @@ set(CPACK_DEBIAN_PACKAGE_HOMEPAGE "https://example.org/gemkiosk")
 # The maintainer scripts call systemd-sysusers, systemd-tmpfiles and deb-systemd-helper.
 # Mesa's EGL and DRI drivers (llvmpipe when there is no GPU) are loaded at run time, so
 # shlibdeps cannot see them.
-set(CPACK_DEBIAN_PACKAGE_DEPENDS "systemd, init-system-helpers, libegl-mesa0, libgl1-mesa-dri")
+# polkitd: libseat's logind backend asks logind to activate the kiosk's session, and logind
+# lets a user other than root do that only with polkit's consent (the action
+# org.freedesktop.login1.chvt, granted to a user in an active local session by systemd's own
+# policy); without polkitd the kiosk gets no devices ("Could not activate session: Permission
+# denied"), found by the VM test (tests/vm).
+set(CPACK_DEBIAN_PACKAGE_DEPENDS
+    "systemd, init-system-helpers, libegl-mesa0, libgl1-mesa-dri, polkitd")
 find_program(GEM_DPKG_SHLIBDEPS dpkg-shlibdeps)
 if(GEM_DPKG_SHLIBDEPS)
   set(CPACK_DEBIAN_PACKAGE_SHLIBDEPS ON)

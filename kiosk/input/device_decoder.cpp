@@ -4,7 +4,8 @@ namespace gem::kiosk {
 
 DeviceDecoder::DeviceDecoder(DeviceKind kind, const TouchAxes& axes)
     : kind_(kind), pointer_(glm::dvec2(1.0)) {
-    if (kind == DeviceKind::touchscreen) touch_.emplace(axes);
+    if (kind == DeviceKind::touchscreen || kind == DeviceKind::absolute_pointer)
+        touch_.emplace(axes);
 }
 
 void DeviceDecoder::feed(const input_event& event, const TouchMapping& mapping,
@@ -12,6 +13,7 @@ void DeviceDecoder::feed(const input_event& event, const TouchMapping& mapping,
                          std::vector<InputEvent>& out) {
     switch (kind_) {
         case DeviceKind::touchscreen:
+        case DeviceKind::absolute_pointer:
             switch (touch_->feed(event)) {
                 case FeedResult::none:
                     return;
@@ -36,7 +38,7 @@ void DeviceDecoder::feed(const input_event& event, const TouchMapping& mapping,
 
 void DeviceDecoder::resynchronise(const TouchSnapshot& snapshot, double time_s,
                                   const TouchMapping& mapping, std::vector<InputEvent>& out) {
-    if (kind_ == DeviceKind::touchscreen) {
+    if (touch_) {
         touch_->resynchronise(snapshot);
         emit_touch_frame(time_s, mapping, out);
     } else if (kind_ == DeviceKind::pointer) {

@@ -1,7 +1,8 @@
 #pragma once
 // The one path from a device's raw events to the kiosk's InputEvents, shared by real devices
 // (evdev_device) and recordings (evemu_replay) so that a replay behaves as the device would:
-// touchscreens through TouchTracker and TouchMapping, pointers through PointerTracker,
+// touchscreens and absolute pointers through TouchTracker and TouchMapping, pointers through
+// PointerTracker,
 // keyboards and anything else dropped.
 
 #include <linux/input.h>

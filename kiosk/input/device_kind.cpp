@@ -7,6 +7,11 @@ namespace gem::kiosk {
 DeviceKind classify(const DeviceCapabilities& c) {
     const bool absolute = c.mt_position || c.abs_xy;
     if (absolute && (c.direct || c.btn_touch)) return DeviceKind::touchscreen;
+    // udev's input_id builtin makes the same call (test_pointers(): absolute axes and a mouse
+    // button but neither INPUT_PROP_DIRECT nor BTN_TOUCH is a mouse, "the path taken by
+    // VMware's USB mouse"): positions cover the screen as a touchscreen's do; the button is the
+    // finger.
+    if (c.abs_xy && c.btn_left && !c.rel_xy) return DeviceKind::absolute_pointer;
     if (c.rel_xy && c.btn_left) return DeviceKind::pointer;
     if (c.typing_keys) return DeviceKind::keyboard;
     return DeviceKind::other;
@@ -16,6 +21,8 @@ std::string_view to_string(DeviceKind kind) {
     switch (kind) {
         case DeviceKind::touchscreen:
             return "touchscreen";
+        case DeviceKind::absolute_pointer:
+            return "absolute pointer";
         case DeviceKind::pointer:
             return "pointer";
         case DeviceKind::keyboard:
@@ -37,6 +44,8 @@ TouchAxes touch_axes(const DeviceCapabilities& c) {
         axes.protocol = TouchProtocol::single_touch;
         axes.x = c.abs_x;
         axes.y = c.abs_y;
+        // Absolute pointers have no BTN_TOUCH: their left button is the finger.
+        if (!c.btn_touch && c.btn_left) axes.contact_key = BTN_LEFT;
     }
     return axes;
 }

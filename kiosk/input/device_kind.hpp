@@ -1,8 +1,10 @@
 #pragma once
 // What an input device is to the kiosk, from what it declares it can report
 // (Documentation/input/event-codes.rst, "Device properties" and "Guidelines"): a touchscreen
-// (INPUT_PROP_DIRECT, or absolute positions with BTN_TOUCH), a pointer (relative motion with a
-// left button), a keyboard (typing keys) or something the kiosk ignores.
+// (INPUT_PROP_DIRECT, or absolute positions with BTN_TOUCH), an absolute pointer (absolute
+// positions with a left button and no touch: a touch controller in "mouse mode", a virtual
+// machine's tablet), a pointer (relative motion with a left button), a keyboard (typing keys) or
+// something the kiosk ignores.
 
 #include <string_view>
 
@@ -10,7 +12,7 @@
 
 namespace gem::kiosk {
 
-enum class DeviceKind { touchscreen, pointer, keyboard, other };
+enum class DeviceKind { touchscreen, absolute_pointer, pointer, keyboard, other };
 
 struct DeviceCapabilities {
     bool direct = false;       // INPUT_PROP_DIRECT
@@ -28,7 +30,8 @@ struct DeviceCapabilities {
 DeviceKind classify(const DeviceCapabilities& capabilities);
 std::string_view to_string(DeviceKind kind);
 
-// How a touchscreen reports and on which ranges (protocol B over A over single touch).
+// How a touchscreen or an absolute pointer reports and on which ranges (protocol B over A over
+// single touch; an absolute pointer is single touch with BTN_LEFT as its contact).
 TouchAxes touch_axes(const DeviceCapabilities& capabilities);
 
 }  // namespace gem::kiosk

@@ -135,7 +135,8 @@ Result<EvemuReplay> EvemuReplay::open(const EvemuReplayOptions& options) {
     if (!description) return Error{description.error()};
     const DeviceCapabilities capabilities = capabilities_of(description.value().get());
     const DeviceKind kind = classify(capabilities);
-    if (kind != DeviceKind::touchscreen && kind != DeviceKind::pointer) {
+    if (kind != DeviceKind::touchscreen && kind != DeviceKind::absolute_pointer &&
+        kind != DeviceKind::pointer) {
         return Error{"evemu recording " + path + ": device \"" +
                      evemu_get_name(description.value().get()) +
                      "\" is neither a touchscreen nor a pointer"};

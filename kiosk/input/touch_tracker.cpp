@@ -28,7 +28,7 @@ FeedResult TouchTracker::feed(const input_event& event) {
             feed_abs(event);
             return FeedResult::none;
         case EV_KEY:
-            if (event.code == BTN_TOUCH) touching_ = event.value != 0;
+            if (event.code == axes_.contact_key) touching_ = event.value != 0;
             return FeedResult::none;
         case EV_SYN:
             if (event.code == SYN_MT_REPORT && axes_.protocol == TouchProtocol::multitouch_a) {
@@ -120,7 +120,7 @@ void TouchTracker::resynchronise(const TouchSnapshot& snapshot) {
     pending_ = {};
     x_ = snapshot.x;
     y_ = snapshot.y;
-    touching_ = snapshot.touching;
+    touching_ = axes_.contact_key == BTN_LEFT ? snapshot.left_button : snapshot.touching;
     switch (axes_.protocol) {
         case TouchProtocol::multitouch_b:
             std::fill(slots_.begin(), slots_.end(), TouchSlotState{});

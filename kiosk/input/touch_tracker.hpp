@@ -6,7 +6,7 @@
 //    -1 ends it; only changes are sent, so each slot keeps its last values;
 //  - protocol A: every frame repeats every contact, each closed by SYN_MT_REPORT; a frame with
 //    no contact (or only empty SYN_MT_REPORTs) means every finger lifted;
-//  - single touch: ABS_X / ABS_Y with BTN_TOUCH.
+//  - single touch: ABS_X / ABS_Y with BTN_TOUCH (or BTN_LEFT: an absolute pointer).
 // SYN_DROPPED (Documentation/input/event-codes.rst): the client must ignore everything up to and
 // including the next SYN_REPORT, then query the device's state; feed() says when, and
 // resynchronise() takes that state (libevdev's for a device, the replay's kept state for a
@@ -34,6 +34,8 @@ struct TouchAxes {
     AxisRange x;
     AxisRange y;
     int slot_count = 1;  // protocol B: ABS_MT_SLOT's maximum + 1
+    // The key that is down while touching: BTN_TOUCH, or BTN_LEFT for an absolute pointer.
+    int contact_key = BTN_TOUCH;
 };
 
 // The device's state as the kernel holds it, for resynchronising after SYN_DROPPED.

@@ -26,6 +26,15 @@ TEST(DeviceKind, Classification) {
     mouse.rel_xy = mouse.btn_left = true;
     EXPECT_EQ(classify(mouse), DeviceKind::pointer);
 
+    // QEMU's usb-tablet (tests/fixtures/kiosk/qemu-usb-tablet.desc), and touch controllers in
+    // mouse mode: absolute axes and a left button, neither INPUT_PROP_DIRECT nor BTN_TOUCH.
+    DeviceCapabilities tablet;
+    tablet.abs_xy = tablet.btn_left = true;
+    EXPECT_EQ(classify(tablet), DeviceKind::absolute_pointer);
+    // A mouse that also reports absolute axes moves relatively.
+    tablet.rel_xy = true;
+    EXPECT_EQ(classify(tablet), DeviceKind::pointer);
+
     DeviceCapabilities keyboard;
     keyboard.typing_keys = true;
     EXPECT_EQ(classify(keyboard), DeviceKind::keyboard);
@@ -56,6 +65,11 @@ TEST(DeviceKind, TouchAxesPickTheProtocol) {
     axes = touch_axes(c);
     EXPECT_EQ(axes.protocol, TouchProtocol::single_touch);
     EXPECT_EQ(axes.x.maximum, 1);
+    EXPECT_EQ(axes.contact_key, BTN_TOUCH);
+    // An absolute pointer: the left button is the finger.
+    c.btn_touch = false;
+    c.btn_left = true;
+    EXPECT_EQ(touch_axes(c).contact_key, BTN_LEFT);
 }
 
 TEST(PointerTracker, LeftButtonIsOneFingerWheelIsZoom) {
@@ -119,6 +133,41 @@ TEST(DeviceDecoder, TouchFramesAreMappedToThePicture) {
     ASSERT_EQ(frame.contacts.size(), 1u);
     EXPECT_NEAR(frame.contacts[0].position.x, 0.0, 1e-9);
     EXPECT_NEAR(frame.contacts[0].position.y, 600.0, 1e-9);
+}
+
+TEST(DeviceDecoder, AnAbsolutePointersButtonIsTheFinger) {
+    DeviceCapabilities tablet;  // QEMU's usb-tablet: both axes 0..32767
+    tablet.abs_xy = tablet.btn_left = true;
+    tablet.abs_x = tablet.abs_y = {0, 32767};
+    DeviceDecoder decoder(classify(tablet), touch_axes(tablet));
+    const TouchMapping mapping(identity_calibration, 0, {640, 480});
+    std::vector<InputEvent> out;
+    TouchSnapshot state;
+    const auto device_state = [&state] { return state; };
+    // Hovering (moving without the button) is no touch.
+    for (const input_event& e : {ev(EV_ABS, ABS_X, 8192), ev(EV_ABS, ABS_Y, 8192), syn(1.0)})
+        decoder.feed(e, mapping, device_state, out);
+    ASSERT_EQ(out.size(), 1u);
+    EXPECT_TRUE(std::get<TouchFrame>(out[0]).contacts.empty());
+    // Pressed, then moved: one finger at 8192/32767 and 16384/32767 of the picture.
+    for (const input_event& e : {ev(EV_KEY, BTN_LEFT, 1), syn(2.0), ev(EV_ABS, ABS_X, 16384),
+                                 ev(EV_ABS, ABS_Y, 16384), syn(3.0)})
+        decoder.feed(e, mapping, device_state, out);
+    ASSERT_EQ(out.size(), 3u);
+    const auto& pressed = std::get<TouchFrame>(out[1]).contacts;
+    ASSERT_EQ(pressed.size(), 1u);
+    EXPECT_NEAR(pressed[0].position.x, 640.0 * 8192.0 / 32767.0, 1e-9);
+    EXPECT_NEAR(pressed[0].position.y, 480.0 * 8192.0 / 32767.0, 1e-9);
+    const auto& moved = std::get<TouchFrame>(out[2]).contacts;
+    ASSERT_EQ(moved.size(), 1u);
+    EXPECT_NEAR(moved[0].position.x, 640.0 * 16384.0 / 32767.0, 1e-9);
+    // Events lost while the button was let go: the device's state says it is up.
+    state.left_button = false;
+    state.touching = true;  // BTN_TOUCH's state is not this device's finger
+    for (const input_event& e : {ev(EV_SYN, SYN_DROPPED, 0), syn(4.0)})
+        decoder.feed(e, mapping, device_state, out);
+    ASSERT_EQ(out.size(), 4u);
+    EXPECT_TRUE(std::get<TouchFrame>(out[3]).contacts.empty());
 }
 
 }  // namespace

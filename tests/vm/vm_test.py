@@ -1,0 +1,383 @@
+#!/usr/bin/env python3
+"""The kiosk on a virtual shop machine, end to end: a real kernel's DRM/KMS driver and evdev
+devices, systemd starting the packaged service with its user, logind session and sandbox.
+
+  vm_test.py --build-dir BUILD --source-dir SRC --work-dir DIR --gemkiosk PROGRAM
+             --gemtables PROGRAM [--full]
+
+Builds the Debian package (cpack) and two small catalogues (gemtables), makes the guest's disk
+(image.sh), boots it under QEMU and checks, from the host:
+  short: the service reports ready (first frame on screen); the screen shows the stone as the
+         kiosk draws it headless on the host from the same config and catalogue; a drag with
+         the virtual tablet turns it, to the view the host's kiosk reaches replaying what the
+         guest's kernel delivered (evemu-record in the guest);
+  full:  also a catalogue staff copy into the inbox is shown; after SIGKILL systemd starts the
+         kiosk again and the screen comes back; a damaged catalogue is refused, the old one
+         stays on screen.
+Both end with a clean stop and report boot-to-first-frame time and the frame rate in the guest.
+Exits 0 on success, 1 on a failed check, 77 when this machine cannot run virtual machines or
+build the image (CTest's SKIP_RETURN_CODE)."""
+
+import argparse
+import glob
+import os
+import re
+import shutil
+import subprocess
+import sys
+import time
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import vm_image  # noqa: E402
+from vm_machine import Machine, VmError  # noqa: E402
+
+SKIP = 77
+HERE = os.path.dirname(os.path.abspath(__file__))
+# Whole-picture PSNR (8-bit) above which two pictures count as the same: the guest and the host
+# draw with the same Mesa (llvmpipe) on different CPUs, so they may differ in the last bit.
+SAME_DB = 35.0
+# A stone the size it is on this screen changes the picture by more than this much.
+MARGIN_DB = 5.0
+FIRST_STONE = "oval-sapphire"
+NEW_STONE = "tolkowsky-diamond"
+
+
+class CheckFailed(Exception):
+    pass
+
+
+def log(text):
+    print(f"[vm {time.strftime('%H:%M:%S')}] {text}", flush=True)
+
+
+def run(command, **kwargs):
+    return subprocess.run(command, check=True, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                          text=True, **kwargs)
+
+
+class Host:
+    """What the host builds and draws: the package, the catalogues, the reference pictures."""
+
+    def __init__(self, args):
+        self.args = args
+        self.work = args.work_dir
+        self.gemkiosk = args.gemkiosk
+        self.gemtables = args.gemtables
+        self.config = os.path.join(HERE, "guest", "gemkiosk.toml")
+
+    def package(self):
+        out = os.path.join(self.work, "deb")
+        shutil.rmtree(out, ignore_errors=True)
+        # -B keeps CPack's staging out of the build folder, where the package test runs its own.
+        run(["cpack", "--config", os.path.join(self.args.build_dir, "CPackConfig.cmake"),
+             "-G", "DEB", "-B", out])
+        debs = glob.glob(os.path.join(out, "*.deb"))
+        if len(debs) != 1:
+            raise CheckFailed(f"cpack made {len(debs)} packages in {out}")
+        return debs[0]
+
+    def catalogues(self):
+        """first: the sapphire the kiosk starts with; diamond: staff's new catalogue. Small
+        databases (64 and 128 px, 10°): the stone is about 100 px tall on this screen."""
+        root = os.path.join(self.work, "catalogues")
+        for folder, stone in (("first", FIRST_STONE), ("diamond", NEW_STONE)):
+            directory = os.path.join(root, folder)
+            database = os.path.join(directory, stone + ".gemdb")
+            os.makedirs(directory, exist_ok=True)
+            if not os.path.exists(database):
+                run([self.gemtables, "build",
+                     os.path.join(self.args.source_dir, "config", "stones", stone + ".toml"),
+                     "-o", database, "--levels", "64,128", "--spacing", "10", "--depth", "6"])
+            with open(os.path.join(directory, "catalogue.toml"), "w") as f:
+                f.write(f'[catalogue]\nname = "{stone}"\n\n[[stone]]\nname = "{stone}"\n'
+                        f'database = "{stone}.gemdb"\nring = "parametric"\n')
+        return root
+
+    def picture(self, name, catalogue, replay=None):
+        """The guest's config drawn headless on the host: the start view, or the view a replay
+        of `replay` (an evemu recording) ends at."""
+        out = os.path.join(self.work, "host", name)
+        shutil.rmtree(out, ignore_errors=True)
+        os.makedirs(out)
+        command = [self.gemkiosk, "--config", self.config, "--backend", "headless",
+                   "--catalogue", catalogue, "--state-dir", os.path.join(out, "state"),
+                   "--snapshot-dir", out, "--snapshot-last", "--seconds", "120"]
+        command += ["--replay", replay, "--exit-after-replay"] if replay else ["--frames", "3"]
+        result = subprocess.run(command, stdout=subprocess.PIPE, stderr=subprocess.STDOUT,
+                                text=True)
+        snapshot = os.path.join(out, "last.png")
+        if result.returncode != 0 or not os.path.exists(snapshot):
+            raise CheckFailed(f"the host's kiosk could not draw {name}:\n{result.stdout[-3000:]}")
+        return vm_image.read_png(snapshot)
+
+
+class Guest:
+    def __init__(self, machine, shell, work):
+        self.machine = machine
+        self.shell = shell
+        self.work = work
+        self.shots = 0
+
+    def unit(self, *properties):
+        text = self.shell.run("systemctl show gemkiosk.service -p " + ",".join(properties))
+        values = dict(line.split("=", 1) for line in text.splitlines() if "=" in line)
+        return [values.get(p, "") for p in properties]
+
+    def wait_active(self, timeout_s, restarts=None):
+        """Until the kiosk has its first frame on screen: systemd calls it active (READY=1,
+        Type=notify) with the status "showing ..." (without a display it is ready too, with
+        "waiting for a display"). With `restarts`, after that many restarts."""
+        deadline = time.monotonic() + timeout_s
+        while True:
+            state, sub, count, status = self.unit("ActiveState", "SubState", "NRestarts",
+                                                  "StatusText")
+            if (state == "active" and status.startswith("showing") and
+                    (restarts is None or int(count or 0) >= restarts)):
+                return
+            if state == "failed":
+                raise CheckFailed("gemkiosk.service failed:\n" + self.journal())
+            if time.monotonic() > deadline:
+                raise CheckFailed(f"gemkiosk.service still {state}/{sub} ({status}) after "
+                                  f"{timeout_s} s:\n" + self.journal())
+            time.sleep(2)
+
+    # The kiosk's own lines carry SYSLOG_IDENTIFIER=gemkiosk; their unit is the logind
+    # session's scope (session-N.scope), where its PAM session moves it, not gemkiosk.service.
+    def journal(self, lines=40):
+        return self.shell.run(f"journalctl -b -t gemkiosk -o cat --no-pager -n {lines}",
+                              check=False)
+
+    def wait_for_log(self, pattern, timeout_s):
+        deadline = time.monotonic() + timeout_s
+        while True:
+            text = self.shell.run("journalctl -b -t gemkiosk -o cat --no-pager", check=False)
+            for line in text.splitlines():
+                if re.search(pattern, line):
+                    return line
+            if time.monotonic() > deadline:
+                raise CheckFailed(f"no line matching '{pattern}' in the kiosk's journal after "
+                                  f"{timeout_s} s:\n" + "\n".join(text.splitlines()[-30:]))
+            time.sleep(2)
+
+    def screenshot(self, name):
+        self.shots += 1
+        return self.machine.qmp.screenshot(os.path.join(self.work, f"shot-{self.shots}-{name}.ppm"))
+
+    def wait_for_picture(self, name, expected, others, timeout_s):
+        """Screenshots until one matches `expected`; then it must also be clearly further from
+        each of `others`. Under emulation a frame takes seconds, and a stone's views stream in
+        after its first frames, so the screen gets there in its own time."""
+        deadline = time.monotonic() + timeout_s
+        best = None
+        while True:
+            shot = self.screenshot(name)
+            if shot.size() == expected.size():
+                value = vm_image.psnr(shot, expected)
+                if best is None or value > best[0]:
+                    best = (value, shot)
+                if value >= SAME_DB:
+                    break
+            elif best is None:
+                best = (0.0, shot)
+            if time.monotonic() > deadline:
+                shot = best[1]
+                break
+            time.sleep(1.0)
+        compare(name, shot, expected, others, self.work)
+        return shot
+
+
+def compare(name, shot, expected, others, work):
+    """The screenshot must match `expected` and be clearly further from each of `others`."""
+    vm_image.write_png(shot, os.path.join(work, name + "-screen.png"))
+    if shot.size() != expected.size():
+        raise CheckFailed(f"{name}: the screen is {shot.size()}, expected {expected.size()}")
+    matched = vm_image.psnr(shot, expected)
+    against = {label: vm_image.psnr(shot, picture) for label, picture in others.items()}
+    vm_image.write_png(vm_image.side_by_side([shot, expected]), os.path.join(work, name + ".png"))
+    detail = ", ".join(f"{v:.1f} dB to {k}" for k, v in against.items())
+    log(f"{name}: {matched:.1f} dB to the expected picture; {detail}")
+    if matched < SAME_DB:
+        raise CheckFailed(f"{name}: {matched:.1f} dB to the expected picture (need {SAME_DB})")
+    for label, value in against.items():
+        if value > matched - MARGIN_DB:
+            raise CheckFailed(f"{name}: {value:.1f} dB to {label}, too close to the "
+                              f"{matched:.1f} dB to the expected picture")
+
+
+def drag(guest, qmp, work):
+    """A one-finger drag to the right across the middle of the screen with the USB tablet, held
+    still before lifting; the guest records what its kernel delivers."""
+    device = guest.shell.run(
+        "for d in /sys/class/input/event*; do grep -q 'QEMU USB Tablet' $d/device/name && "
+        "echo /dev/input/${d##*/}; done; true").strip().splitlines()
+    if len(device) != 1:
+        raise CheckFailed(f"the guest has {len(device)} USB tablets: {device}")
+    description = guest.shell.run(f"evemu-describe {device[0]}")
+    with open(os.path.join(work, "qemu-usb-tablet.desc"), "w") as f:
+        f.write(description)
+    guest.shell.run(f"setsid sh -c 'echo $$ > /run/evemu.pid; "
+                    f"exec evemu-record {device[0]} > /run/drag.evemu' </dev/null >/dev/null 2>&1 &")
+    time.sleep(2.0)
+    qmp.pointer(0.35, 0.5)
+    time.sleep(0.3)
+    qmp.pointer(0.35, 0.5, button=True)
+    for step in range(1, 11):
+        time.sleep(0.1)
+        qmp.pointer(0.35 + 0.03 * step, 0.5)
+    time.sleep(0.5)
+    qmp.pointer(0.65, 0.5, button=False)
+    time.sleep(2.0)
+    # evemu-record writes through stdio: SIGINT ends it and flushes what it recorded.
+    guest.shell.run("kill -INT $(cat /run/evemu.pid); sleep 1")
+    recording = guest.shell.run("cat /run/drag.evemu")
+    path = os.path.join(work, "drag.evemu")
+    with open(path, "w") as f:
+        f.write(recording)
+    if "E:" not in recording:
+        raise CheckFailed("the guest's kernel delivered no tablet events:\n" + recording[-2000:])
+    return path
+
+
+def scenario(args, host, guest, catalogues, figures):
+    first_catalogue = os.path.join(catalogues, "first")
+    diamond_catalogue = os.path.join(catalogues, "diamond")
+    empty = os.path.join(args.work_dir, "no-catalogue")
+    os.makedirs(empty, exist_ok=True)
+
+    log("waiting for gemkiosk.service to report its first frame")
+    guest.wait_active(timeout_s=600)
+    active_us, start_us = guest.unit("ActiveEnterTimestampMonotonic",
+                                     "ExecMainStartTimestampMonotonic")
+    figures["boot_to_first_frame_s"] = int(active_us) / 1e6
+    figures["start_to_first_frame_s"] = (int(active_us) - int(start_us)) / 1e6
+    log(f"first frame {figures['boot_to_first_frame_s']:.1f} s after the guest's kernel started "
+        f"({figures['start_to_first_frame_s']:.1f} s after the kiosk did)")
+    log("the kiosk says: " + guest.wait_for_log(r"display: DRM .* lit", timeout_s=10))
+
+    # The stone is on screen: the guest's picture is the host's, and not the background alone.
+    sapphire_start = host.picture("sapphire-start", first_catalogue)
+    background = host.picture("background", empty)
+    start = guest.wait_for_picture("first-frame", sapphire_start,
+                                   {"the background alone": background}, timeout_s=180)
+    figures["boot_to_stone_s"] = float(guest.shell.run("cut -d' ' -f1 /proc/uptime"))
+    log(f"the stone on screen {figures['boot_to_stone_s']:.0f} s after the guest's kernel "
+        "started (its views stream in after the first frames)")
+
+    # A drag turns it, as far as the same events turn the host's kiosk.
+    recording = drag(guest, guest.machine.qmp, args.work_dir)
+    sapphire_turned = host.picture("sapphire-turned", first_catalogue, replay=recording)
+    turned = guest.wait_for_picture("drag", sapphire_turned, {"the view before the drag": start},
+                                    timeout_s=180)
+    if not args.full:
+        return
+
+    # Staff copy a new catalogue into the inbox; the kiosk validates it and shows it, keeping
+    # the view the shopper left.
+    guest.shell.run("runuser -u clerk -- cp -r /srv/vm-test/catalogues/diamond "
+                    "/var/lib/gemkiosk/inbox/spring")
+    guest.wait_for_log(f"showing catalogue '{NEW_STONE}'", timeout_s=180)
+    diamond_turned = host.picture("diamond-turned", diamond_catalogue, replay=recording)
+    diamond = guest.wait_for_picture("new-catalogue", diamond_turned, {"the sapphire": turned},
+                                     timeout_s=180)
+
+    # The kiosk is killed; systemd starts it again, on the catalogue it had installed.
+    pid, = guest.unit("MainPID")
+    guest.shell.run(f"kill -KILL {pid}")
+    log(f"killed the kiosk (pid {pid}) with SIGKILL")
+    killed_at = time.monotonic()
+    guest.wait_active(timeout_s=300, restarts=1)
+    new_pid, restarts = guest.unit("MainPID", "NRestarts")
+    figures["restart_s"] = time.monotonic() - killed_at
+    log(f"systemd restarted it as pid {new_pid} (NRestarts={restarts}) in "
+        f"{figures['restart_s']:.0f} s")
+    if new_pid == pid:
+        raise CheckFailed("the kiosk's pid did not change after SIGKILL")
+    diamond_start = host.picture("diamond-start", diamond_catalogue)
+    guest.wait_for_picture("restart", diamond_start,
+                           {"the sapphire": sapphire_start, "the view before the restart": diamond},
+                           timeout_s=180)
+
+    # A damaged copy (one byte flipped inside a view) is refused; the diamond stays.
+    guest.shell.run(
+        "rm -rf /tmp/bad && cp -r /srv/vm-test/catalogues/diamond /tmp/bad && "
+        f"f=/tmp/bad/{NEW_STONE}.gemdb && half=$(( $(stat -c %s $f) / 2 )) && "
+        "printf '\\132' | dd of=$f bs=1 seek=$half conv=notrunc status=none && "
+        "chmod -R a+rX /tmp/bad && runuser -u clerk -- cp -r /tmp/bad /var/lib/gemkiosk/inbox/summer")
+    line = guest.wait_for_log("rejected", timeout_s=180)
+    log(f"the kiosk says: {line}")
+    if NEW_STONE + ".gemdb" not in line or "checksum" not in line:
+        raise CheckFailed(f"the refusal does not name the database and the fault: {line}")
+    # The screen keeps the diamond over several frames after the refusal.
+    for look in range(3):
+        time.sleep(5)
+        compare(f"damaged-catalogue-{look + 1}", guest.screenshot("after-damaged"), diamond_start,
+                {"the sapphire": sapphire_start}, args.work_dir)
+
+
+def stop_and_measure(guest, figures):
+    """A clean stop (SIGTERM from systemd) and the kiosk's own frame summary."""
+    guest.shell.run("systemctl stop gemkiosk.service", timeout_s=60)
+    state, result = guest.unit("ActiveState", "Result")
+    if result != "success":
+        raise CheckFailed(f"gemkiosk.service stopped with result {result}:\n" + guest.journal())
+    summary = guest.wait_for_log(r"frames: \d+ frames in", timeout_s=30)
+    log(f"kiosk in the guest: {summary}")
+    figures["frames"] = summary
+    status = [line for line in guest.journal(400).splitlines() if line.startswith("status:")]
+    for line in status:
+        log(f"kiosk in the guest: {line}")
+
+
+def main():
+    parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
+    parser.add_argument("--build-dir", required=True)
+    parser.add_argument("--source-dir", required=True)
+    parser.add_argument("--work-dir", required=True)
+    parser.add_argument("--gemkiosk", required=True, help="the host's gemkiosk program")
+    parser.add_argument("--gemtables", required=True, help="the host's gemtables program")
+    parser.add_argument("--full", action="store_true", help="the whole scenario, not the short one")
+    parser.add_argument("--cpus", type=int, default=2)
+    args = parser.parse_args()
+    args.work_dir = os.path.abspath(args.work_dir)
+    os.makedirs(args.work_dir, exist_ok=True)
+    if shutil.which("qemu-system-x86_64") is None:
+        log("skipped: qemu-system-x86_64 is not installed (scripts/install-deps.sh)")
+        return SKIP
+
+    host = Host(args)
+    began = time.monotonic()
+    log("building the package and the catalogues")
+    deb = host.package()
+    catalogues = host.catalogues()
+    image = os.path.join(args.work_dir, "image")
+    made = subprocess.run([os.path.join(HERE, "image.sh"), "--deb", deb, "--catalogues",
+                           catalogues, "--out", image])
+    if made.returncode == SKIP:
+        return SKIP
+    if made.returncode != 0:
+        log("image.sh failed")
+        return 1
+    log(f"image ready after {time.monotonic() - began:.0f} s")
+
+    figures = {}
+    machine = Machine(image, args.work_dir, cpus=args.cpus)
+    log(f"booting under QEMU ({machine.accelerator}, {args.cpus} CPUs)")
+    try:
+        shell = machine.connect_shell(timeout_s=600)
+        log(f"the guest's shell answered after {time.monotonic() - machine.started:.0f} s")
+        guest = Guest(machine, shell, args.work_dir)
+        scenario(args, host, guest, catalogues, figures)
+        stop_and_measure(guest, figures)
+    except (CheckFailed, VmError) as failure:
+        log(f"FAILED: {failure}")
+        log("the guest's serial console, last lines:\n" + machine.serial_tail())
+        return 1
+    finally:
+        machine.stop()
+    log(f"passed in {time.monotonic() - began:.0f} s; pictures in {args.work_dir}")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
