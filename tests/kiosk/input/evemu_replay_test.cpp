@@ -26,6 +26,8 @@ const std::string atmel_drag = data_dir + "Atmel_maXTouch_Touchscreen.1-finger-d
 const std::string atmel_two =
     data_dir + "Atmel_maXTouch_Touchscreen.2-fingers-touch-release.events";
 const std::string ntrig_drag = data_dir + "N-Trig_MultiTouch.1-finger-drag-NW-SE.events";
+const std::string tablet_drag =
+    std::string(GEM_FIXTURES_DIR) + "/kiosk/qemu-usb-tablet-drag.events";
 const std::string dropped_fixture =
     std::string(GEM_FIXTURES_DIR) +
     "/evemu/Atmel_maXTouch_Touchscreen.2-fingers-syn-dropped.events";
@@ -158,6 +160,44 @@ TEST(EvemuReplay, AtmelOneFingerDragUpDown) {
     EXPECT_LT(played[top].contacts[0].position.y, played.front().contacts[0].position.y - 100);
     EXPECT_GT(played[with_contact - 1].contacts[0].position.y,
               played[top].contacts[0].position.y + 100);
+}
+
+// Single touch with BTN_LEFT as the finger: the position at each SYN_REPORT while the button is
+// down, nothing while it is up.
+RawFrames scan_absolute_pointer(const std::vector<test::RawEvent>& events) {
+    RawFrames frames;
+    RawContact contact{0, 0, 0};
+    bool down = false;
+    for (const test::RawEvent& e : events) {
+        if (e.type == EV_ABS && e.code == ABS_X) contact.x = e.value;
+        if (e.type == EV_ABS && e.code == ABS_Y) contact.y = e.value;
+        if (e.type == EV_KEY && e.code == BTN_LEFT) down = e.value != 0;
+        if (e.type == EV_SYN && e.code == SYN_REPORT) {
+            frames.push_back(down ? std::vector<RawContact>{contact} : std::vector<RawContact>{});
+        }
+    }
+    return frames;
+}
+
+TEST(EvemuReplay, QemuTabletDragIsOneFinger) {
+    // Recorded from the guest kernel's evdev device in the VM test; the description in the
+    // recording's header says ABS_X and ABS_Y 0..32767, BTN_LEFT, no BTN_TOUCH.
+    Result<EvemuReplay> replay = EvemuReplay::open(options_for(tablet_drag));
+    ASSERT_TRUE(replay.ok()) << replay.error();
+    EXPECT_EQ(replay.value().kind(), DeviceKind::absolute_pointer);
+    const std::vector<TouchFrame> played = play_all(tablet_drag, {32767, 32767});
+    const RawFrames raw = scan_absolute_pointer(test::read_raw_events(tablet_drag));
+    expect_frames_equal(played, raw);
+    // Numbers written in the recording: a hover at (11468, 16384), pressed there, moved right
+    // in ten steps to 21299, released; the hover and the release are frames without a finger.
+    ASSERT_EQ(played.size(), 13u);
+    EXPECT_TRUE(played.front().contacts.empty());
+    ASSERT_EQ(played[1].contacts.size(), 1u);
+    EXPECT_DOUBLE_EQ(played[1].contacts[0].position.x, 11468.0);
+    EXPECT_DOUBLE_EQ(played[1].contacts[0].position.y, 16384.0);
+    ASSERT_EQ(played[11].contacts.size(), 1u);
+    EXPECT_DOUBLE_EQ(played[11].contacts[0].position.x, 21299.0);
+    EXPECT_TRUE(played.back().contacts.empty());
 }
 
 TEST(EvemuReplay, NTrigDiagonalDragProtocolA) {
