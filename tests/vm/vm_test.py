@@ -240,6 +240,15 @@ def drag(guest, qmp, work):
     return path
 
 
+def vt_switch(number):
+    """A shell command that switches the guest's console to VT `number` and waits for it: the
+    VT_ACTIVATE and VT_WAITACTIVE ioctls (linux/vt.h: 0x5606, 0x5607), through perl, which
+    every Debian system has (perl-base is essential)."""
+    return ("timeout 90 perl -e 'open(my $t, \"+<\", \"/dev/tty0\") or die \"tty0: $!\"; "
+            f"ioctl($t, 0x5606, {number}) or die \"VT_ACTIVATE: $!\"; "
+            f"ioctl($t, 0x5607, {number}) or die \"VT_WAITACTIVE: $!\";'")
+
+
 def scenario(args, host, guest, catalogues, figures):
     first_catalogue = os.path.join(catalogues, "first")
     diamond_catalogue = os.path.join(catalogues, "diamond")
@@ -298,6 +307,33 @@ def scenario(args, host, guest, catalogues, figures):
     guest.wait_for_picture("restart", diamond_start,
                            {"the sapphire": sapphire_start, "the view before the restart": diamond},
                            timeout_s=180)
+
+    # A keyboard plugged into the kiosk cannot switch it away: the kiosk grabs keyboards, so
+    # Ctrl+Alt+F2 never reaches the console.
+    guest.machine.qmp.execute("send-key", keys=[{"type": "qcode", "data": k}
+                                                for k in ("ctrl", "alt", "f2")])
+    time.sleep(3)
+    active_vt = guest.shell.run("cat /sys/class/tty/tty0/active").strip()
+    if active_vt != "tty1":
+        raise CheckFailed(f"Ctrl+Alt+F2 on the kiosk's keyboard switched the console to {active_vt}")
+    log("Ctrl+Alt+F2 on the keyboard: the console stays on tty1")
+
+    # A VT switch by the system (as root): the kiosk gives the display up and takes it back,
+    # with nothing worse than an info line in its log.
+    since = guest.shell.run("date +%s").strip()
+    guest.shell.run(vt_switch(2), timeout_s=120)
+    guest.wait_for_log(r"seat: .* disabled", timeout_s=60)
+    away = guest.screenshot("vt2")
+    if away.size() == diamond_start.size() and vm_image.psnr(away, diamond_start) >= SAME_DB:
+        raise CheckFailed("after switching to tty2 the screen still shows the kiosk")
+    log(f"switched to tty2: the screen shows the console ({away.width}x{away.height})")
+    guest.shell.run(vt_switch(1), timeout_s=120)
+    guest.wait_for_picture("vt-back", diamond_start, {"the sapphire": sapphire_start},
+                           timeout_s=180)
+    complaints = guest.shell.run(f"journalctl -t gemkiosk -p warning -o cat --no-pager "
+                                 f"--since @{since}").strip()
+    if complaints and "-- No entries --" not in complaints:
+        raise CheckFailed("warnings from the kiosk over a VT switch:\n" + complaints)
 
     # A damaged copy (one byte flipped inside a view) is refused; the diamond stays.
     guest.shell.run(
