@@ -190,12 +190,18 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         }
         stats.wait_ms = ms_since(start);
     }
+    if (!first.view && options_.wait_on_cold_start) {
+        start = Clock::now();
+        cache_->wait_idle(std::chrono::seconds(5));
+        first = cache_->acquire(asked, wanted);
+        stats.wait_ms += ms_since(start);
+    }
     stats.level = first.level;
     stats.exact = first.exact;
     stats.angle_rad = first.match.angle;
     if (!first.view) {
         if (stats_out != nullptr) *stats_out = stats;
-        return true;  // cold start: nothing resident yet, the background shows
+        return true;  // cold start, not waited for: nothing resident yet, the background shows
     }
 
     auto g0 = upload(first, stats);

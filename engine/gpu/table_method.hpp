@@ -22,6 +22,10 @@ struct TableOptions {
     // Headless renders (tests, gemrender) wait until the views they want are decoded; the
     // kiosk never does and shows what is resident.
     bool wait_for_views = false;
+    // A new scene's first frame finds nothing resident. true: it waits for its view (at most
+    // 5 s), so a stone never first appears as an empty setting (the VM test saw seconds of it
+    // under emulation); later frames never wait. false: that frame shows the background.
+    bool wait_on_cold_start = true;
     // The highest level shown (a cheaper, coarser view for a slow GPU); -1: no cap.
     int max_level = -1;
     ViewCacheOptions cache;

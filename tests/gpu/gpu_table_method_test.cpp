@@ -231,5 +231,38 @@ TEST_F(GpuTableMethod, OrthographicTablesRefuseAPerspectiveCamera) {
     EXPECT_NE(drawn.error().find("orthographic"), std::string::npos) << drawn.error();
 }
 
+// A scene's first frame, with nothing decoded yet and no waiting for exact views (the kiosk's
+// setting): it waits for its first view unless told not to, and then shows only the background.
+TEST_F(GpuTableMethod, FirstFrameWaitsForItsViewOnlyOnColdStart) {
+    const ViewGrid& grid = fx_->database->grid();
+    auto camera =
+        gpu_test::table_aligned_camera(*fx_->database, grid.direction(0), 0.0, 128, kImage);
+    ASSERT_TRUE(camera.ok()) << camera.error();
+    auto target = gpu::RenderTarget::make(kImage, kImage);
+    ASSERT_TRUE(target.ok()) << target.error();
+    auto cube = gpu::EnvironmentCube::from_environment(Environment::studio(), 64);
+    ASSERT_TRUE(cube.ok()) << cube.error();
+    gpu::StoneFrame frame{&fx_->stone, fx_->stone.material, camera.value(), {}, &cube.value()};
+    for (const bool wait : {true, false}) {
+        gpu::TableOptions options;
+        options.wait_on_cold_start = wait;
+        auto method = gpu::TableMethod::make(fx_->database, options);
+        ASSERT_TRUE(method.ok()) << method.error();
+        target.value().bind();
+        gpu::TableFrameStats stats;
+        auto drawn = method.value().draw(frame, &stats);
+        ASSERT_TRUE(drawn.ok()) << drawn.error();
+        EXPECT_EQ(stats.drawn, wait) << "wait_on_cold_start " << wait;
+        if (wait) {
+            std::printf("cold start: waited %.1f ms for the first view\n", stats.wait_ms);
+            // A second frame finds the view resident and does not wait.
+            drawn = method.value().draw(frame, &stats);
+            ASSERT_TRUE(drawn.ok()) << drawn.error();
+            EXPECT_TRUE(stats.drawn);
+            EXPECT_EQ(stats.wait_ms, 0.0);
+        }
+    }
+}
+
 }  // namespace
 }  // namespace gem

@@ -10,7 +10,7 @@
 # in /srv/vm-test/catalogues for the test to copy into the inbox. Writes OUT/root.img (ext4),
 # OUT/vmlinuz and OUT/initrd.img.
 #
-# The Debian part (mmdebstrap, about 15 minutes and 300 MB of downloads the first time) is
+# The Debian part (mmdebstrap, 4 to 6 minutes and about 300 MB of downloads the first time) is
 # cached as a tarball under $GEM_VM_CACHE (default ~/.cache/gemkiosk-vm), keyed by its package
 # list; the package's layer is added to a fresh copy every time (about 30 s).
 #
@@ -58,7 +58,7 @@ if [ ! -f "$base" ]; then
   host=$(echo "$mirror" | sed -E 's#^[a-z]+://([^/:]+).*#\1#')
   timeout 15 bash -c "exec 3<>/dev/tcp/$host/80" 2>/dev/null ||
     skip "the Debian mirror $host cannot be reached, and no guest image is cached in $cache"
-  echo "image.sh: building the Debian 12 guest in $base (once; about 15 minutes)" >&2
+  echo "image.sh: building the Debian 12 guest in $base (once; about 5 minutes)" >&2
   # Documentation, manual pages and translations are left out: the guest never reads them.
   mmdebstrap --variant=apt --mode=root --include="$(echo $packages | tr ' ' ',')" \
     --dpkgopt='path-exclude=/usr/share/man/*' --dpkgopt='path-exclude=/usr/share/doc/*' \
@@ -89,7 +89,9 @@ chroot "$root" useradd --create-home --no-user-group --gid users --groups gemkio
 
 # The test's config (a modest mode on the virtual display) and catalogues.
 install -m 0644 "$here/guest/gemkiosk.toml" "$root/etc/gemkiosk/gemkiosk.toml"
+# (A package built without the default catalogue has no /usr/share/gemkiosk.)
 rm -rf "$root/usr/share/gemkiosk/catalogue"
+mkdir -p "$root/usr/share/gemkiosk"
 cp -r "$catalogues/first" "$root/usr/share/gemkiosk/catalogue"
 mkdir -p "$root/srv/vm-test/catalogues"
 for dir in "$catalogues"/*/; do
