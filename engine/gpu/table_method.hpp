@@ -20,7 +20,7 @@ namespace gem::gpu {
 struct TableOptions {
     bool blend = false;  // false: the nearest stored view; true: the two nearest, weighted
     // Headless renders (tests, gemrender) wait until the views they want are decoded; the
-    // kiosk never does and shows what is resident.
+    // kiosk does not and shows what is resident (after a scene's first frame, below).
     bool wait_for_views = false;
     // A new scene's first frame finds nothing resident. true: it waits for its view (at most
     // 5 s), so a stone never first appears as an empty setting (the VM test saw seconds of it

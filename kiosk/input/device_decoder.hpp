@@ -2,8 +2,7 @@
 // The one path from a device's raw events to the kiosk's InputEvents, shared by real devices
 // (evdev_device) and recordings (evemu_replay) so that a replay behaves as the device would:
 // touchscreens and absolute pointers through TouchTracker and TouchMapping, pointers through
-// PointerTracker,
-// keyboards and anything else dropped.
+// PointerTracker, keyboards and anything else dropped.
 
 #include <linux/input.h>
 

@@ -7,9 +7,9 @@ namespace gem::kiosk {
 DeviceKind classify(const DeviceCapabilities& c) {
     const bool absolute = c.mt_position || c.abs_xy;
     if (absolute && (c.direct || c.btn_touch)) return DeviceKind::touchscreen;
-    // udev's input_id builtin makes the same call (test_pointers(): absolute axes and a mouse
-    // button but neither INPUT_PROP_DIRECT nor BTN_TOUCH is a mouse, "the path taken by
-    // VMware's USB mouse"): positions cover the screen as a touchscreen's do; the button is the
+    // Absolute axes and a mouse button but neither INPUT_PROP_DIRECT nor BTN_TOUCH: udev's
+    // input_id builtin (test_pointers()) calls such a device a mouse, as virtual machines' USB
+    // tablets are. Its positions cover the screen as a touchscreen's do; the button is the
     // finger.
     if (c.abs_xy && c.btn_left && !c.rel_xy) return DeviceKind::absolute_pointer;
     if (c.rel_xy && c.btn_left) return DeviceKind::pointer;

@@ -28,6 +28,8 @@ import subprocess
 import sys
 import time
 
+# The helpers beside this file; no byte-code written into the source tree.
+sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import vm_image  # noqa: E402
 from vm_machine import Machine, VmError  # noqa: E402
