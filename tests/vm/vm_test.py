@@ -150,10 +150,14 @@ class Guest:
         return self.shell.run(f"journalctl -b -t gemkiosk -o cat --no-pager -n {lines}",
                               check=False)
 
-    def wait_for_log(self, pattern, timeout_s):
+    def wait_for_log(self, pattern, timeout_s, since=None):
+        """The first line of the kiosk's journal (this boot, or from the guest's clock time
+        `since`, in seconds) matching `pattern`."""
         deadline = time.monotonic() + timeout_s
+        window = f"--since @{since}" if since else "-b"
         while True:
-            text = self.shell.run("journalctl -b -t gemkiosk -o cat --no-pager", check=False)
+            text = self.shell.run(f"journalctl {window} -t gemkiosk -o cat --no-pager",
+                                  check=False)
             for line in text.splitlines():
                 if re.search(pattern, line):
                     return line
@@ -242,6 +246,14 @@ def drag(guest, qmp, work):
     return path
 
 
+def no_warnings(guest, since, what):
+    """No line of priority warning or worse from the kiosk since the guest's time `since`."""
+    complaints = guest.shell.run(f"journalctl -t gemkiosk -p warning -o cat --no-pager "
+                                 f"--since @{since}").strip()
+    if complaints and "-- No entries --" not in complaints:
+        raise CheckFailed(f"warnings from the kiosk over {what}:\n" + complaints)
+
+
 def vt_switch(number):
     """A shell command that switches the guest's console to VT `number` and waits for it: the
     VT_ACTIVATE and VT_WAITACTIVE ioctls (linux/vt.h: 0x5606, 0x5607), through perl, which
@@ -283,6 +295,19 @@ def scenario(args, host, guest, catalogues, figures):
                                     timeout_s=180)
     if args.short:
         return
+
+    # A second tablet plugged in and pulled out while the kiosk runs: the kiosk finds it in
+    # /dev/input (inotify), opens it through the seat, and lets it go, without a warning.
+    since = guest.shell.run("date +%s").strip()
+    guest.machine.qmp.execute("device_add", driver="usb-tablet", id="second-tablet")
+    line = guest.wait_for_log(r"input device \S+ \(QEMU QEMU USB Tablet\): absolute pointer",
+                              timeout_s=120, since=since)
+    path = line.split()[3]
+    log(f"plugged in a second tablet: {line}")
+    guest.machine.qmp.execute("device_del", id="second-tablet")
+    log("pulled it out: " + guest.wait_for_log(f"input device {re.escape(path)} removed",
+                                               timeout_s=120, since=since))
+    no_warnings(guest, since, "a tablet plugged in and out")
 
     # Staff copy a new catalogue into the inbox; the kiosk validates it and shows it, keeping
     # the view the shopper left.
@@ -333,10 +358,7 @@ def scenario(args, host, guest, catalogues, figures):
     guest.shell.run(vt_switch(1), timeout_s=120)
     guest.wait_for_picture("vt-back", diamond_start, {"the sapphire": sapphire_start},
                            timeout_s=180)
-    complaints = guest.shell.run(f"journalctl -t gemkiosk -p warning -o cat --no-pager "
-                                 f"--since @{since}").strip()
-    if complaints and "-- No entries --" not in complaints:
-        raise CheckFailed("warnings from the kiosk over a VT switch:\n" + complaints)
+    no_warnings(guest, since, "a VT switch")
 
     # A damaged copy (one byte flipped inside a view) is refused; the diamond stays.
     guest.shell.run(
