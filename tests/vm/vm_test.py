@@ -172,8 +172,8 @@ class Guest:
 
     def wait_for_picture(self, name, expected, others, timeout_s):
         """Screenshots until one matches `expected`; then it must also be clearly further from
-        each of `others`. Under emulation a frame takes seconds, and a stone's views stream in
-        after its first frames, so the screen gets there in its own time."""
+        each of `others`. Under emulation a frame takes seconds, so the screen gets there in
+        its own time."""
         deadline = time.monotonic() + timeout_s
         best = None
         while True:
