@@ -66,7 +66,7 @@ class Qmp:
         if os.path.exists(path):
             os.remove(path)
         self.execute("screendump", filename=str(path))
-        picture = vm_image.read_ppm(path)
+        picture = vm_image.read(path)
         os.remove(path)  # a megabyte each; the checks write the ones they judge as PNG
         return picture
 
