@@ -8,6 +8,7 @@ RayList ray_list_at(const DecodedView& view, std::size_t pixel) {
     const std::uint32_t first = view.ray_offset[pixel];
     const std::uint32_t end = first + view.ray_count[pixel];
     list.hit = end > first;
+    list.truncated_weight = view.truncated_weight[pixel];
     for (std::uint32_t r = first; r < end; ++r) {
         const TracedRay ray{glm::dvec3(view.position[r]),
                             glm::dvec3(view.direction[r]),

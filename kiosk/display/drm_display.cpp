@@ -31,6 +31,13 @@ std::string errno_text(int negative_or_positive_errno) {
                                                         : negative_or_positive_errno);
 }
 
+// How loud a failed flip or modeset is. EACCES: DRM master was taken away, which logind does
+// on a VT switch before the seat's disable event reaches the kiosk (seen in the VM test); that
+// event follows and the mode is set again when the seat comes back, so it is no fault.
+LogLevel fault_level(int negative_errno) {
+    return negative_errno == -EACCES ? LogLevel::info : LogLevel::warning;
+}
+
 }  // namespace
 
 Result<std::unique_ptr<DrmDisplay>> DrmDisplay::make(const DisplayOptions& options,
@@ -216,10 +223,7 @@ Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
                                         commit_->name() + " modeset failed: " + errno_text(r);
             if (!lit_once_) return Error{message};
             // Lost master or a monitor that refuses the mode: try again in a second, quietly.
-            // Master taken away (EACCES) is a VT switch in progress, not a fault.
-            if (!flip_lost_logged_ && r == -EACCES) log_info(message + "; retrying every second");
-            if (!flip_lost_logged_ && r != -EACCES)
-                log_warning(message + "; retrying every second");
+            if (!flip_lost_logged_) log(fault_level(r), message + "; retrying every second");
             flip_lost_logged_ = true;
             modeset_retry_at_ = Clock::now() + std::chrono::seconds(1);
             return false;
@@ -242,16 +246,8 @@ Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
     // EBUSY: the driver still has a flip in flight (ours was dropped as lost); next frame.
     if (r == -EBUSY) return true;
     needs_modeset_ = true;
-    // EACCES: DRM master was taken away, which logind does on a VT switch before the seat's
-    // disable event reaches the kiosk (seen in the VM test); that event follows, and the mode
-    // is set again when the seat comes back. Not a fault.
-    if (r == -EACCES) {
-        log_info("DRM display " + card_ + " " + connector_name_ +
-                 ": DRM master taken away (a VT switch?)");
-        return true;
-    }
-    log_warning("DRM display " + card_ + " " + connector_name_ + ": page flip failed (" +
-                errno_text(r) + "); setting the mode again");
+    log(fault_level(r), "DRM display " + card_ + " " + connector_name_ + ": page flip failed (" +
+                            errno_text(r) + "); setting the mode again");
     return true;
 }
 
