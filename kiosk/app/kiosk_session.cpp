@@ -309,6 +309,8 @@ void KioskSession::choose_render_method() {
                  method_ladder(0).front().name);
         return;
     }
+    // Marked before probing: a probe that fails is not tried again once frames are on screen.
+    probed_size_ = size;
     auto probe = probe_methods(selection_->stone(), selection_->look(), render_, *picture_,
                                kStartView, budget_ms);
     if (!probe) {
@@ -316,7 +318,10 @@ void KioskSession::choose_render_method() {
         return;
     }
     const ProbeResult& r = probe.value();
-    probed_size_ = size;
+    if (!r.choice.valid) {
+        log_error("render.method auto: no candidate drew a frame; using table");
+        return;
+    }
     render_ = apply_candidate(render_, r.candidates[r.choice.index]);
     char cost[96];
     std::snprintf(cost, sizeof cost, " (%dx%d, probe took %.2f s)", size.x, size.y, r.seconds);

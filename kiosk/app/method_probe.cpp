@@ -1,5 +1,7 @@
 #include "app/method_probe.hpp"
 
+#include "app/frame_stats.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -22,11 +24,7 @@ std::vector<MethodCandidate> method_ladder(int needed_level) {
 std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms) {
     std::erase_if(frame_ms, [](double t) { return !std::isfinite(t) || t < 0.0; });
     if (frame_ms.empty()) return std::nullopt;
-    std::sort(frame_ms.begin(), frame_ms.end());
-    // Nearest rank: the smallest value with at least 90 % of the values at or below it.
-    const auto rank =
-        static_cast<std::size_t>(std::ceil(0.9 * static_cast<double>(frame_ms.size())));
-    return frame_ms[std::max<std::size_t>(rank, 1) - 1];
+    return quantile(std::move(frame_ms), kFrameTimeQuantile);
 }
 
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,

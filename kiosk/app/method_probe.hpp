@@ -34,6 +34,7 @@ std::vector<MethodCandidate> method_ladder(int needed_level);
 // outlier in a run of ten or more. Non-finite and negative times (a failed frame) are dropped;
 // with none left the candidate has no statistic.
 std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms);
+inline constexpr double kFrameTimeQuantile = 0.9;
 
 struct MethodChoice {
     std::size_t index = 0;                            // into the candidates

@@ -32,7 +32,8 @@ std::vector<double> measure(StoneScene& scene, gpu::RenderTarget& target, const 
     gpu::FrameRenderer& renderer = scene.renderer();
     const int total = options.warmup_frames + options.frames;
     const int allowed_misses =
-        options.frames - static_cast<int>(std::ceil(0.9 * static_cast<double>(options.frames)));
+        options.frames -
+        static_cast<int>(std::ceil(kFrameTimeQuantile * static_cast<double>(options.frames)));
     std::vector<double> times;
     int misses = 0;
     glm::dvec3 last_forward(0.0);
