@@ -28,16 +28,11 @@ double reference_half(double x) {
     return std::nearbyint(x / q) * q;  // x / q is exact: q is a power of two
 }
 
-// quantise.hpp's stated bound for one value.
-double stated_half_bound(double x) {
-    return std::max(kHalfMaxRelativeError * x, kHalfMaxSubnormalError) + std::ldexp(x, -24);
-}
-
 TEST(FailureOpticsQuantiseLimits, HalvesFromSubnormalToOne) {
     int mismatched = 0, values = 0;
     for (double x = 1e-9; x <= 1.0; x *= 1.0007) {
         const double decoded = half_to_float(double_to_half(x));
-        EXPECT_LE(std::abs(decoded - x), stated_half_bound(x)) << x;
+        EXPECT_LE(std::abs(decoded - x), failure_test::half_bound(x)) << x;
         mismatched += decoded != reference_half(x) ? 1 : 0;
         ++values;
     }
@@ -47,7 +42,7 @@ TEST(FailureOpticsQuantiseLimits, HalvesFromSubnormalToOne) {
     EXPECT_EQ(half_to_float(double_to_half(std::ldexp(1.0, -25))), 0.0f);
     EXPECT_EQ(half_to_float(double_to_half(std::ldexp(1023.0, -24))), std::ldexp(1023.0, -24));
     EXPECT_EQ(half_to_float(double_to_half(kHalfMinNormal)), kHalfMinNormal);
-    EXPECT_NEAR(half_to_float(double_to_half(1e-4)), 1e-4, stated_half_bound(1e-4));
+    EXPECT_NEAR(half_to_float(double_to_half(1e-4)), 1e-4, failure_test::half_bound(1e-4));
     EXPECT_EQ(half_to_float(double_to_half(1.0 - std::ldexp(1.0, -12))), 1.0f);
     EXPECT_EQ(half_to_float(double_to_half(1.0 - std::ldexp(1.0, -11))),
               1.0 - std::ldexp(1.0, -11));
@@ -56,7 +51,7 @@ TEST(FailureOpticsQuantiseLimits, HalvesFromSubnormalToOne) {
     const double x = 1.0 + std::ldexp(1.0, -11) + std::ldexp(1.0, -40);
     EXPECT_EQ(reference_half(x), 1.0 + std::ldexp(1.0, -10));
     EXPECT_EQ(half_to_float(double_to_half(x)), 1.0f);
-    EXPECT_LE(std::abs(1.0 - x), stated_half_bound(x));  // still within the stated bound
+    EXPECT_LE(std::abs(1.0 - x), failure_test::half_bound(x));  // still within the stated bound
     std::printf("halves: %d of %d log-spaced values in [1e-9, 1] differ from single rounding\n",
                 mismatched, values);
 }
@@ -150,9 +145,9 @@ TEST(FailureOpticsQuantiseLimits, ShadedColourAfterTheCodec) {
         glm::dvec3 bound(1e-7);
         auto add = [&](const TracedRay& e) {
             const glm::dvec3 t = glm::exp(-stone.material.absorption_per_mm * e.path_mm);
-            const double ep = stated_half_bound(e.path_mm);
+            const double ep = failure_test::half_bound(e.path_mm);
             bound += grey * t *
-                     (stated_half_bound(e.weight) +
+                     (failure_test::half_bound(e.weight) +
                       e.weight * (glm::exp(stone.material.absorption_per_mm * ep) - 1.0));
             longest_path = std::max(longest_path, e.path_mm);
         };

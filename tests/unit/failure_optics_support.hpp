@@ -1,10 +1,11 @@
 #pragma once
 // Shared pieces of the failure_optics_* tests: catalogue indices, a round brilliant in a
-// constant-index material, one small orthographic view traced pixel by pixel, and the energy
-// balance of a ray-list.
+// constant-index material, one small orthographic view traced pixel by pixel, the energy
+// balance of a ray-list and the error bound of a value stored as binary16.
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -12,6 +13,7 @@
 #include "geometry/cuts.hpp"
 #include "optics/material.hpp"
 #include "tables/database_types.hpp"
+#include "tables/quantise.hpp"
 #include "tables/view_grid.hpp"
 #include "trace/tracer.hpp"
 
@@ -61,6 +63,13 @@ inline std::vector<RayList> trace_view(const Tracer& tracer, double ior,
         }
     }
     return lists;
+}
+
+// quantise.hpp's stated bound on the error of one value stored as binary16, plus the rounding
+// to float the encoder makes first (2^-24 relative).
+inline double half_bound(double x) {
+    const double a = std::abs(x);
+    return std::max(kHalfMaxRelativeError * a, kHalfMaxSubnormalError) + std::ldexp(a, -24);
 }
 
 // reflected + exits + truncated: 1 with no absorption.

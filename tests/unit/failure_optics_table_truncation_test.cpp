@@ -21,11 +21,6 @@
 namespace gem {
 namespace {
 
-double half_error(double x) {
-    return std::max(std::ldexp(std::abs(x), -11), std::ldexp(1.0, -25)) +
-           std::ldexp(std::abs(x), -24);
-}
-
 TEST(FailureOpticsTableTruncation, StoredTruncatedWeightMatchesTheTracer) {
     const double n = failure_test::catalogue_index("moissanite");
     Stone stone = failure_test::round_brilliant(n);
@@ -83,14 +78,14 @@ TEST(FailureOpticsTableTruncation, StoredTruncatedWeightMatchesTheTracer) {
             ASSERT_EQ(v.ray_count[p], kept);
             const double stored_truncated = v.truncated_weight[p];
             EXPECT_LE(std::abs(stored_truncated - expected_truncated),
-                      half_error(expected_truncated))
+                      failure_test::half_bound(expected_truncated))
                 << "view " << view << " pixel " << p;
             // The stored pixel read back as a ray-list holds all its light, within the
             // rounding of each stored weight.
             const double sum = failure_test::energy(ray_list_at(v, p));
-            double bound = half_error(stored_truncated) + 1e-9;
+            double bound = failure_test::half_bound(stored_truncated) + 1e-9;
             for (std::uint32_t r = v.ray_offset[p]; r < v.ray_offset[p] + v.ray_count[p]; ++r)
-                bound += half_error(v.weight[r]);
+                bound += failure_test::half_bound(v.weight[r]);
             EXPECT_LE(std::abs(sum - 1.0), bound) << "view " << view << " pixel " << p;
             worst_sum = std::max(worst_sum, std::abs(sum - 1.0));
             worst_bound_share = std::max(worst_bound_share, std::abs(sum - 1.0) / bound);
