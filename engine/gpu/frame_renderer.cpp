@@ -6,7 +6,6 @@
 #include "gpu/phong_method.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "gpu/ring_renderer.hpp"
-#include "gpu/trace_method.hpp"
 
 namespace gem::gpu {
 
@@ -113,7 +112,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, bool finish) {
             ok = table_->draw(frame, &stats.table);
             break;
         case Method::trace:
-            ok = trace_->draw(frame, setup_.trace);
+            ok = trace_->draw(frame, setup_.trace, setup_.trace_dispersion);
             break;
         case Method::phong:
             ok = phong_->draw(frame);

@@ -12,13 +12,13 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/table_method.hpp"
+#include "gpu/trace_method.hpp"
 #include "render/environment.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
 
-class TraceMethod;
 class PhongMethod;
 class RingRenderer;
 struct RingMesh;
@@ -33,6 +33,7 @@ struct FrameSetup {
     Material material;                         // shading-time material (colour, absorption)
     ShadingSettings shading;
     TraceSettings trace;  // trace: depth, weights, threshold
+    TraceDispersion trace_dispersion = TraceDispersion::none;
     TableOptions table;
     const Environment* environment = nullptr;    // what surrounds everything
     int cube_face = 512;                         // virtual-cube face size, texels

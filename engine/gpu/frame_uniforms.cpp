@@ -47,18 +47,7 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
                                         0.5 * camera.height() * camera.pixel_size()));
     program.set("u_cam_distance", static_cast<float>(camera.distance()));
     program.set("u_cam_start", static_cast<float>(camera.ray_start()));
-}
-
-void draw_stone_pass(const VertexArray& empty) {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_ALWAYS);
-    glDepthMask(GL_TRUE);
-    glBindVertexArray(empty.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
+    program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));
 }
 
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {

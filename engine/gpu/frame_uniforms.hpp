@@ -27,14 +27,8 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
 // The matrix that rasterises exactly what Camera::ray sees: clip x and y span the image
 // (right, up), depth runs front to back over the sphere of radius `scene_radius_mm` about the
 // stone's centre (everything drawn must lie inside it: the ring as well as the stone). The
-// stone methods write their entry point's depth with it, so a ring drawn after them is hidden
-// behind the stone and hides it in turn.
+// stone pass and the ring share it, so each hides the other where it is nearer.
 glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
-// Draws the fullscreen triangle of a per-pixel stone pass (table, trace) with the program in
-// use: blended over what is drawn (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA) and writing the depth
-// the shader gives (its entry point, whatever the buffer held), so a ring drawn next hides
-// the stone and is hidden by it. Restores blending off and GL_LESS.
-void draw_stone_pass(const VertexArray& empty);
 
 // Binds the environment cube to texture unit `unit`.
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit);

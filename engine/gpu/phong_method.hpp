@@ -1,13 +1,14 @@
 #pragma once
 // The `phong` method (DESIGN.md, "Methods side by side"; thesis fig. 8.17): the stone's
-// facets rasterised with flat normals and Phong lighting, alpha-blended over the background,
-// back facets first and then front facets, no refraction. The baseline the table and trace
-// methods are compared against.
+// facets rasterised (the stone pass's triangles) with flat normals and Phong lighting,
+// alpha-blended over the background, back facets first and then front facets, no refraction. The
+// baseline the table and trace methods are compared against.
 
 #include "geometry/stone.hpp"
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
+#include "gpu/stone_geometry.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
@@ -25,11 +26,9 @@ class PhongMethod {
     Result<bool> draw(const StoneFrame& frame) const;
 
   private:
-    explicit PhongMethod(Program program);
+    PhongMethod(StoneGeometry geometry, Program program);
+    StoneGeometry geometry_;  // the stone pass's triangles; normals from its facet planes
     Program program_;
-    VertexArray vertex_array_;
-    Buffer vertices_;
-    GLsizei vertex_count_ = 0;
 };
 
 }  // namespace gem::gpu

@@ -35,7 +35,8 @@ Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
     std::string text =
         "#version 300 es\nprecision highp float;\nprecision highp int;\n"
         "precision highp sampler2D;\nprecision highp usampler2D;\n"
-        "precision highp isampler2D;\nprecision highp samplerCube;\n";
+        "precision highp isampler2D;\nprecision highp samplerCube;\n"
+        "precision highp usamplerCube;\n";
     for (const std::string& d : spec.defines) text += "#define " + d + "\n";
     for (std::size_t i = 0; i < names.size(); ++i) {
         auto chunk = shader_text(names[i]);

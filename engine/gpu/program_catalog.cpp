@@ -6,19 +6,21 @@ std::vector<ProgramSpec> all_program_specs() {
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
-        {"table", {"fullscreen.vert"}, {"camera.glsl", "shading.glsl", "table.frag"}, {}},
+        // Every stone method draws the stone pass (stone.vert, stone_geometry.hpp) and reads
+        // the facets from stone.glsl; each differs in its fragment shader's last file.
+        {"table", {"stone.vert"}, {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"}, {}},
         {"table_non_convex",
-         {"fullscreen.vert"},
-         {"camera.glsl", "shading.glsl", "table.frag"},
+         {"stone.vert"},
+         {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"},
          {"NON_CONVEX"}},
-        // Per-pixel tracing in the fragment shader (trace_method.hpp).
-        {"trace", {"fullscreen.vert"}, {"camera.glsl", "shading.glsl", "trace.frag"}, {}},
+        // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
+        {"trace", {"stone.vert"}, {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"}, {}},
         {"trace_non_convex",
-         {"fullscreen.vert"},
-         {"camera.glsl", "shading.glsl", "trace.frag"},
+         {"stone.vert"},
+         {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
-        {"phong", {"phong.vert"}, {"phong.frag"}, {}},
+        {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}},
         // The kiosk's rotate-and-encode copy to the window surface (kiosk/display/present_pass).

@@ -4,8 +4,10 @@
 #include <chrono>
 #include <vector>
 
+#include "gpu/channel_wavelengths.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "gpu/texel_array.hpp"
 
 namespace gem::gpu {
 namespace {
@@ -15,10 +17,6 @@ using Clock = std::chrono::steady_clock;
 double ms_since(Clock::time_point start) {
     return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
 }
-
-// Dominant wavelengths of the sRGB primaries (R 612, G 549, B 465 nm), where each channel's
-// exit direction is evaluated from the stored d(direction)/dn.
-constexpr double kChannelNm[3] = {612.0, 549.0, 465.0};
 
 }  // namespace
 
@@ -42,13 +40,13 @@ Result<TableMethod> TableMethod::make(std::shared_ptr<const Database> database,
     TableMethod m;
     m.database_ = std::move(database);
     m.options_ = options;
-    auto stone = StoneTextures::upload(m.database_->stone());
-    if (!stone) return Error{stone.error()};
-    m.stone_ = std::make_unique<StoneTextures>(std::move(stone).value());
+    auto stone = StoneGeometry::upload(m.database_->stone());
+    if (!stone) return Error{"table: " + stone.error()};
+    m.stone_ = std::make_unique<StoneGeometry>(std::move(stone).value());
     auto program = build_program(m.database_->stone().convex ? "table" : "table_non_convex");
     if (!program) return Error{program.error()};
     m.program_ = std::make_unique<Program>(std::move(program).value());
-    m.empty_ = make_vertex_array();
+    m.stone_->attach(*m.program_);
     m.cache_ = std::make_unique<ViewCache>(std::make_shared<DatabaseViewSource>(m.database_),
                                            options.cache);
     return m;
@@ -228,10 +226,8 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     const bool dispersion = database_->params().dispersion;
     p.set("u_dispersion", dispersion ? 1 : 0);
     if (dispersion) {
-        const double nd = frame.material.index();
-        p.set("u_dn_channel", glm::vec3(frame.material.index(kChannelNm[0]) - nd,
-                                        frame.material.index(kChannelNm[1]) - nd,
-                                        frame.material.index(kChannelNm[2]) - nd));
+        const auto nd = static_cast<float>(frame.material.index());
+        p.set("u_dn_channel", channel_indices(frame.material) - glm::vec3(nd));
     }
     // table.frag's uniforms of view slots 0 and 1: four textures, image map, frame, side.
     static constexpr const char* kSlotUniforms[2][7] = {
@@ -260,7 +256,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     // one unit (their default, unit 0, holds the cube) fail the draw in GL ES.
     bind_view(v1 != nullptr ? *v1 : *v0, v1 != nullptr ? second : first, 1, 7);
 
-    draw_stone_pass(empty_);
+    stone_->draw_front_faces();
     stats.drawn = true;
     stats.views = v1 != nullptr ? 2 : 1;
     stats.blend = v1 != nullptr ? blend : 1.0;

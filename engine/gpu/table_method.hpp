@@ -1,8 +1,8 @@
 #pragma once
 // The thesis' method on the GPU (DESIGN.md, "The method", stage 2): the view cache streams
 // ray-tables from a .gemdb, the stored views the camera needs are uploaded as textures, and
-// one fragment pass shades them (table.frag). Between stored directions it shows either the
-// nearest stored view or a blend of the two nearest (TableOptions::blend).
+// the stone pass shades them where the stone is (table.frag). Between stored directions it shows
+// either the nearest stored view or a blend of the two nearest (TableOptions::blend).
 
 #include <array>
 #include <memory>
@@ -10,7 +10,7 @@
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
-#include "gpu/stone_textures.hpp"
+#include "gpu/stone_geometry.hpp"
 #include "tables/reader.hpp"
 #include "tables/view_cache.hpp"
 #include "util/result.hpp"
@@ -70,9 +70,8 @@ class TableMethod {
     std::shared_ptr<const Database> database_;
     std::unique_ptr<ViewCache> cache_;
     TableOptions options_;
-    std::unique_ptr<StoneTextures> stone_;
+    std::unique_ptr<StoneGeometry> stone_;
     std::unique_ptr<Program> program_;
-    VertexArray empty_;
     // The views on the GPU, most recently used first; a blend needs two, a turn a third.
     std::vector<std::unique_ptr<GpuView>> gpu_views_;
     // Packing space for uploads, kept so a turn does not reallocate tens of MB per view.

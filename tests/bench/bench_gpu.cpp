@@ -1,12 +1,15 @@
-// Figures of the GPU shading stage, printed (not asserted): milliseconds per frame of every
-// method on this machine's GL (llvmpipe without a GPU) at 1280×720 and 1920×1080 with the
-// stone filling about half the screen height, at depth 4 and 8, loose and in a ring; for the
-// table method, the share of each frame spent streaming views (cache lookups, texture
-// uploads). Frames are a turntable (azimuth steps of 3° at 35° elevation), each bounded by
-// glFinish.
+// Figures of the GPU shading stage, printed (not asserted): does a frame's cost follow the
+// stone's pixels? Every method draws the round diamond at 1024×1024 with its bounding sphere
+// at zoom 1, 0.62 (about a fifth of the picture), 0.5 and 0.25, and in its ring at the kiosk's
+// start view (1920×1080, zoom 1 on the ring, 30° elevation); per view and method: the median
+// ms per frame (each bounded by glFinish) over a turn of 1° a frame at 40° elevation, the
+// stone's pixels (counted on the CPU by the exact tracer's entry test), ms per million stone
+// pixels, and the ratio to phong on the same view. The table method reads a database of the
+// diamond at 256/1024 px every 10°, traced to the same depth.
 //
 //   bench_gpu [--frames N] [--quick]
-// --quick: 1280×720 only, fewer frames (a smoke run).
+// --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
+#include <algorithm>
 #include <chrono>
 #include <cstdio>
 #include <cstring>
@@ -23,19 +26,23 @@
 #include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
 #include "table_build.hpp"
+#include "trace/intersector.hpp"
 #include "trace/parallel.hpp"
 
 namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
+using gem::gpu::Method;
+using gem::gpu::TraceDispersion;
 
-// A database of the Tolkowsky diamond at `depth`: levels 256 and 512, views every 8° above
-// −10° elevation (what a turntable at 35° needs).
+constexpr int kTraceDepth = 7;  // the depth the figures of the peer tracer were taken at
+constexpr int kKioskDepth = 8;  // config/gemkiosk.toml: render.depth
+
 std::shared_ptr<const gem::Database> build_database(const gem::Stone& stone, int depth) {
     gem::BuildParams params;
-    params.levels = {256, 512};
-    params.grid.spacing_rad = 8.0 * std::numbers::pi / 180.0;
+    params.levels = {256, 1024};
+    params.grid.spacing_rad = 10.0 * std::numbers::pi / 180.0;
     params.grid.min_elevation_rad = -10.0 * std::numbers::pi / 180.0;
     params.max_depth = static_cast<std::uint32_t>(depth);
     auto grid = gem::ViewGrid::build(params.grid, stone.symmetry);
@@ -55,86 +62,101 @@ std::shared_ptr<const gem::Database> build_database(const gem::Stone& stone, int
     return std::make_shared<const gem::Database>(std::move(db).value());
 }
 
-struct Case {
-    gem::gpu::Method method;
-    bool blend = false;
-    int depth = 8;
-    bool ring = false;
+struct View {
+    const char* name;
+    int width, height;
+    double zoom;
+    double elevation_deg;
+    bool ring;
 };
 
-void run(const Case& c, const gem::Stone& stone, std::shared_ptr<const gem::Database> db,
-         const gem::Environment& environment, const gem::gpu::RingMesh& ring, int width, int height,
-         int frames) {
+struct Case {
+    const char* name;
+    Method method;
+    bool blend = false;
+    int depth = kTraceDepth;
+    TraceDispersion dispersion = TraceDispersion::none;
+};
+
+gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, int frame) {
+    gem::CameraSettings cs;
+    cs.elevation_deg = v.elevation_deg;
+    cs.azimuth_deg = 1.0 * frame;
+    cs.zoom = v.zoom;
+    // The kiosk frames the whole scene (the ring too); loose stones frame the stone.
+    const double radius = v.ring ? r.scene_radius_mm() : r.stone_radius_mm();
+    return gem::Camera::make(cs, radius, v.width, v.height).value();
+}
+
+// Pixels whose centre ray enters the stone, by the exact tracer's entry test.
+long stone_pixels(const gem::Stone& stone, const gem::Camera& camera) {
+    const auto surface = gem::make_intersector(stone);
+    long hits = 0;
+    for (int y = 0; y < camera.height(); ++y) {
+        for (int x = 0; x < camera.width(); ++x) {
+            const gem::Ray ray = camera.ray(x + 0.5, y + 0.5);
+            gem::SurfaceHit hit;
+            hits += surface->next_entry(ray.origin, ray.direction, gem::kNoFacet, hit) ? 1 : 0;
+        }
+    }
+    return hits;
+}
+
+// Median ms per frame of one method on one view.
+double run(const Case& c, const View& v, const gem::Stone& stone,
+           const std::shared_ptr<const gem::Database>& db, const gem::Environment& environment,
+           const gem::gpu::RingMesh& ring, int frames) {
     gem::gpu::FrameSetup setup;
     setup.method = c.method;
-    setup.database = std::move(db);
+    setup.database = c.method == Method::table ? db : nullptr;
     setup.stone = stone;
     setup.material = stone.material;
     setup.shading.lights = {{{20.0, 60.0, 40.0}, false, {2.0, 2.0, 2.0}},
                             {{-30.0, 50.0, -20.0}, false, {1.5, 1.5, 1.5}}};
     setup.trace.max_depth = c.depth;
+    setup.trace_dispersion = c.dispersion;
     setup.table.blend = c.blend;
     setup.environment = &environment;
-    if (c.ring) setup.ring = &ring;
+    if (v.ring) setup.ring = &ring;
     auto renderer = gem::gpu::FrameRenderer::make(std::move(setup));
     if (!renderer) {
         std::fprintf(stderr, "bench_gpu: %s\n", renderer.error().c_str());
         std::exit(1);
     }
-    auto target = gem::gpu::RenderTarget::make(width, height);
+    auto target = gem::gpu::RenderTarget::make(v.width, v.height);
     target.value().bind();
-    double total = 0.0;
-    double streaming = 0.0;
-    double worst = 0.0;
-    int stand_ins = 0;
+    std::vector<double> ms;
     for (int f = -1; f < frames; ++f) {  // frame −1 warms up (program, first views)
-        gem::CameraSettings cs;
-        cs.elevation_deg = 35.0;
-        cs.azimuth_deg = 3.0 * f;
-        cs.zoom = 0.5;  // the stone's bounding sphere spans half the image height
-        auto camera = gem::Camera::make(cs, renderer.value().stone_radius_mm(), width, height);
+        const gem::Camera camera = camera_for(v, renderer.value(), f);
         if (auto* table = renderer.value().table()) {
-            const double omega = 3.0 * std::numbers::pi / 180.0 * 60.0;
-            table->cache().prefetch(-camera.value().forward(), {0.0, omega, 0.0},
-                                    table->level_for(table->database().camera().field_mm /
-                                                     camera.value().pixel_size()));
-            if (f < 0) table->cache().wait_idle(std::chrono::seconds(60));
+            const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
+            table->cache().prefetch(
+                -camera.forward(), {0.0, omega, 0.0},
+                table->level_for(table->database().camera().field_mm / camera.pixel_size()));
+            table->cache().wait_idle(std::chrono::seconds(60));  // decoding is not shading
         }
-        auto stats = renderer.value().render(camera.value(), true);
+        auto stats = renderer.value().render(camera, true);
         if (!stats) {
             std::fprintf(stderr, "bench_gpu: %s\n", stats.error().c_str());
             std::exit(1);
         }
-        if (f < 0) continue;
-        const auto& t = stats.value().table;
-        total += stats.value().cpu_ms;
-        streaming += t.acquire_ms + t.upload_ms;
-        worst = std::max(worst, stats.value().cpu_ms);
-        stand_ins += (renderer.value().table() != nullptr && !t.exact) ? 1 : 0;
+        if (f >= 0) ms.push_back(stats.value().cpu_ms);
     }
-    std::printf("%-6s %-7s depth %d %-5s %4d×%-4d  %8.1f ms/frame (worst %7.1f)  %5.2f fps",
-                gem::gpu::to_string(c.method),
-                c.method == gem::gpu::Method::table ? (c.blend ? "blend" : "nearest") : "", c.depth,
-                c.ring ? "ring" : "loose", width, height, total / frames, worst,
-                1000.0 * frames / total);
-    if (c.method == gem::gpu::Method::table) {
-        std::printf("  streaming %4.1f%%  stand-in frames %d/%d", 100.0 * streaming / total,
-                    stand_ins, frames);
-    }
-    std::printf("\n");
-    std::fflush(stdout);
+    std::sort(ms.begin(), ms.end());
+    return ms[ms.size() / 2];
 }
 
 }  // namespace
 
 int main(int argc, char** argv) {
-    int frames = 8;
+    int frames = 6;
     bool quick = false;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) frames = std::atoi(argv[++i]);
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
     }
     if (quick) frames = std::min(frames, 3);
+    frames = std::max(frames, 1);
     auto context = gem::gpu::EglContext::headless();
     if (!context) {
         std::fprintf(stderr, "bench_gpu: %s\n", context.error().c_str());
@@ -145,25 +167,47 @@ int main(int argc, char** argv) {
                                *gem::find_material("diamond"));
     const gem::Environment environment = gem::Environment::studio();
     auto ring = gem::gpu::make_ring({}, stone.value());
-    std::shared_ptr<const gem::Database> db[2] = {build_database(stone.value(), 4),
-                                                  build_database(stone.value(), 8)};
-    std::vector<std::pair<int, int>> sizes = {{1280, 720}, {1920, 1080}};
-    if (quick) sizes.resize(1);
-    for (const auto& [w, h] : sizes) {
-        for (int d = 0; d < 2; ++d) {
-            const int depth = d == 0 ? 4 : 8;
-            for (bool ring_on : {false, true}) {
-                run({gem::gpu::Method::table, false, depth, ring_on}, stone.value(), db[d],
-                    environment, ring.value(), w, h, frames);
-                run({gem::gpu::Method::table, true, depth, ring_on}, stone.value(), db[d],
-                    environment, ring.value(), w, h, frames);
-                run({gem::gpu::Method::trace, false, depth, ring_on}, stone.value(), nullptr,
-                    environment, ring.value(), w, h, frames);
-            }
-        }
-        for (bool ring_on : {false, true}) {
-            run({gem::gpu::Method::phong, false, 0, ring_on}, stone.value(), nullptr, environment,
-                ring.value(), w, h, frames);
+    const auto db = build_database(stone.value(), kTraceDepth);
+
+    std::vector<View> views = {{"1024² zoom 1", 1024, 1024, 1.0, 40.0, false},
+                               {"1024² zoom 0.62", 1024, 1024, 0.62, 40.0, false},
+                               {"1024² zoom 0.5", 1024, 1024, 0.5, 40.0, false},
+                               {"1024² zoom 0.25", 1024, 1024, 0.25, 40.0, false},
+                               {"kiosk 1080p ring", 1920, 1080, 1.0, 30.0, true}};
+    std::vector<Case> cases = {
+        {"phong", Method::phong},
+        {"table nearest", Method::table},
+        {"table blend", Method::table, true},
+        {"trace depth 7", Method::trace},
+        {"trace depth 8", Method::trace, false, kKioskDepth},
+        {"trace 7 fire 1st order", Method::trace, false, kTraceDepth, TraceDispersion::first_order},
+        {"trace 7 fire exact", Method::trace, false, kTraceDepth, TraceDispersion::exact}};
+    if (quick) views = {views[0], views[3]};
+
+    std::printf("%-18s %-24s %9s %9s %8s %10s %8s\n", "view", "method", "ms/frame", "stone Mpx",
+                "stone %", "ms/Mpx", "×phong");
+    for (const View& v : views) {
+        // The stone's pixels at the turn's middle frame (a turn of a few degrees barely moves
+        // its outline).
+        auto probe = gem::gpu::FrameRenderer::make([&] {
+            gem::gpu::FrameSetup s;
+            s.method = Method::phong;
+            s.stone = stone.value();
+            s.environment = &environment;
+            if (v.ring) s.ring = &ring.value();
+            return s;
+        }());
+        const gem::Camera middle = camera_for(v, probe.value(), frames / 2);
+        const long pixels = stone_pixels(stone.value(), middle);
+        const double mpx = pixels / 1e6;
+        double phong_ms = 0.0;
+        for (const Case& c : cases) {
+            const double ms = run(c, v, stone.value(), db, environment, ring.value(), frames);
+            if (c.method == Method::phong) phong_ms = ms;
+            std::printf("%-18s %-24s %9.1f %9.3f %7.1f%% %10.1f %8.2f\n", v.name, c.name, ms, mpx,
+                        100.0 * pixels / (static_cast<double>(v.width) * v.height), ms / mpx,
+                        ms / phong_ms);
+            std::fflush(stdout);
         }
     }
     return 0;

@@ -4,6 +4,7 @@
 
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "gpu/stone_geometry.hpp"
 #include "gpu_test_support.hpp"
 
 namespace gem {
@@ -28,6 +29,29 @@ TEST(GpuPrograms, EveryProgramBuilds) {
     }
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
+}
+
+TEST(GpuPrograms, StoneBlockHasTheLayoutTheUploadWrites) {
+    // stone.glsl's std140 block and StoneGeometry's struct must agree to the byte in every
+    // program that reads the facets.
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    int readers = 0;
+    for (const gpu::ProgramSpec& spec : gpu::all_program_specs()) {
+        auto program = gpu::Program::build(spec);
+        ASSERT_TRUE(program.ok()) << program.error();
+        const GLuint index = glGetUniformBlockIndex(program.value().id(), "StoneFacets");
+        if (index == GL_INVALID_INDEX) continue;
+        GLint bytes = 0;
+        glGetActiveUniformBlockiv(program.value().id(), index, GL_UNIFORM_BLOCK_DATA_SIZE, &bytes);
+        EXPECT_EQ(static_cast<std::size_t>(bytes), gpu::stone_block_bytes()) << spec.name;
+        GLint limit = 0;
+        glGetIntegerv(GL_MAX_UNIFORM_BLOCK_SIZE, &limit);
+        EXPECT_LE(bytes, 16384) << "more than OpenGL ES 3.0 guarantees";
+        EXPECT_LE(bytes, limit) << spec.name;
+        ++readers;
+    }
+    EXPECT_GE(readers, 5);  // table, trace (both variants each) and phong
 }
 
 TEST(GpuPrograms, MissingChunkIsNamed) {

@@ -18,10 +18,7 @@ void camera_ray(vec2 ndc, out vec3 origin, out vec3 direction) {
     }
 }
 
-uniform mat4 u_view_projection;  // frame_uniforms.hpp: view_projection()
+uniform vec2 u_viewport_px;     // the picture's size in pixels (camera.width(), height())
 
-// Window depth (0..1) of a stone-frame point, as the rasteriser would write it.
-float window_depth(vec3 p) {
-    vec4 clip = u_view_projection * vec4(p, 1.0);
-    return clamp(0.5 * clip.z / clip.w + 0.5, 0.0, 1.0);
-}
+// The ndc of this fragment's pixel centre, for fragment shaders drawn over the picture.
+vec2 fragment_ndc(vec4 frag_coord) { return frag_coord.xy / u_viewport_px * 2.0 - 1.0; }

@@ -8,7 +8,7 @@
 #endif
 
 in vec3 v_position;
-in vec3 v_normal;
+flat in uint v_facet;
 out vec4 o_colour;
 
 uniform samplerCube u_environment;
@@ -28,7 +28,7 @@ const float kAmbient = 0.3;
 const float kDiffuse = 0.7;
 
 void main() {
-    vec3 n = normalize(v_normal);
+    vec3 n = facet_plane(int(v_facet)).xyz;
     if (!gl_FrontFacing) n = -n;  // a back facet is lit from inside the stone
     vec3 v = u_eye_at_infinity == 1 ? normalize(u_eye) : normalize(u_eye - v_position);
     vec3 diffuse = vec3(0.0);

@@ -1,4 +1,4 @@
-// Shading shared by the table and trace methods (DESIGN.md, "The method", eq. 6.2-6.5), the
+// Shading shared by the table and trace methods (after stone.glsl) (DESIGN.md, "The method", eq. 6.2-6.5), the
 // GPU twin of engine/render/shading.cpp: everything here works in the stone frame (mm).
 //  physical: w_r (E(r) + k_s L(r)) + sum_n w_n exp(-sigma path_n) (E(t_n) + k_st L(t_n))
 //  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))
@@ -22,19 +22,15 @@ uniform float u_alpha;
 uniform vec3 u_stone_colour;  // I_o
 uniform vec3 u_absorption;    // Beer-Lambert sigma per channel, 1/mm
 
-// Facet planes, one texel each (n.xyz, d): n.p = d on the facet. Row-major, kTexWidth wide.
-uniform highp sampler2D u_planes;
 #ifdef NON_CONVEX
 // Triangles, three texels each (a corner per texel, w = the triangle's facet).
 uniform highp sampler2D u_triangles;
 uniform int u_triangle_count;
 #endif
 
-const int kTexWidth = 1024;
+const int kTexWidth = 1024;  // texel_array.hpp: kTextureWidth
 
 ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
-
-vec4 facet_plane(int facet) { return texelFetch(u_planes, texel_of(facet), 0); }
 
 // Where the ray from p along d meets the virtual cube, as a cube-map lookup direction: the
 // six images were taken from the stone's centre, so the exit point matters, not only d.

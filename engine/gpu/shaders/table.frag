@@ -1,9 +1,8 @@
-// The thesis' shading stage from ray-tables: per output pixel, find the stored pixel of up
-// to two stored views (q = M p: roll, zoom and symmetry as an image map), read its ray-list
+// The thesis' shading stage from ray-tables, per fragment of the stone pass: find the stored
+// pixel of up to two stored views (q = M p: roll, zoom and symmetry as an image map), read its ray-list
 // (first reflection, then the exit rays), bring every ray into the stone frame (the view
 // was folded by a symmetry g: stone = g^T stored) and shade it with shading.glsl. Two views
 // are blended by weight (between stored directions); one view is the nearest-view method.
-in vec2 v_ndc;
 out vec4 o_colour;
 
 uniform int u_views;        // 1 or 2
@@ -33,7 +32,7 @@ uniform int u_side1;
 // Shades the ray-list under image point p (mm) of one view; false when the pixel misses.
 bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
                 sampler2D rays_c, mat2 image_map, mat3 to_stone, int side,
-                out vec3 colour, out vec3 entry) {
+                out vec3 colour) {
     vec2 q = image_map * p;
     vec2 cell = vec2(q.x / u_field_mm + 0.5, 0.5 - q.y / u_field_mm) * float(side);
     if (any(lessThan(cell, vec2(0.0))) || any(greaterThanEqual(cell, vec2(float(side)))))
@@ -52,7 +51,6 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
         vec3 pos = to_stone * b.xyz;
         vec3 n = to_stone * facet_plane(int(c.w + 0.5)).xyz;
         if (k == 0) {
-            entry = pos;
             colour += shade_reflected(pos, d, n, a.w);
             continue;
         }
@@ -71,24 +69,23 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
 }
 
 void main() {
-    vec2 p = v_ndc * u_cam_half * u_image_scale;
+    vec2 p = fragment_ndc(gl_FragCoord) * u_cam_half * u_image_scale;
     vec3 c0 = vec3(0.0);
     vec3 c1 = vec3(0.0);
-    vec3 e0 = vec3(0.0);
-    vec3 e1 = vec3(0.0);
     bool hit0 = shade_view(p, u_pixels0, u_rays_a0, u_rays_b0, u_rays_c0, u_image_map0,
-                           u_to_stone0, u_side0, c0, e0);
+                           u_to_stone0, u_side0, c0);
     bool hit1 = false;
     if (u_views > 1) {
         hit1 = shade_view(p, u_pixels1, u_rays_a1, u_rays_b1, u_rays_c1, u_image_map1,
-                          u_to_stone1, u_side1, c1, e1);
+                          u_to_stone1, u_side1, c1);
     }
     float w0 = u_views > 1 ? u_blend : 1.0;
     float w1 = 1.0 - w0;
     float coverage = (hit0 ? w0 : 0.0) + (hit1 ? w1 : 0.0);
     if (coverage <= 0.0) discard;
     // Straight colour with alpha = coverage: blending gives w0 c0 + w1 c1 + (1 - a) background.
+    // Where the stone is drawn but a stored view saw it miss (its silhouette from another
+    // direction), that view's share shows what is behind.
     vec3 sum = (hit0 ? w0 * c0 : vec3(0.0)) + (hit1 ? w1 * c1 : vec3(0.0));
     o_colour = vec4(sum / coverage, coverage);
-    gl_FragDepth = window_depth(hit0 ? e0 : e1);
 }

@@ -1,12 +1,15 @@
-// The trace method: the exact tracer (engine/trace/tracer.cpp) per fragment, shaded with
-// shading.glsl. The entry facet splits the pixel ray into the first reflection and the ray
-// inside; every facet hit inside splits a branch into an internal reflection (followed) and a
-// refracted exit ray (shaded at once: a shaded ray needs no storage). Depth counts segments,
-// branches below u_min_weight are cut, TIR keeps everything: the same rules as the CPU.
-// Convex stones: ray/convex-polyhedron by clipping against the facet planes, one branch at a
-// time. NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that
-// may re-enter through the cleft wait on a small fixed stack as on the CPU.
-in vec2 v_ndc;
+// The trace method: the exact tracer (engine/trace/tracer.cpp) per fragment of the stone pass,
+// shaded with shading.glsl. The rasteriser gives the entry facet and point; the entry splits
+// the pixel ray into the first reflection and the ray inside; every facet hit inside splits a
+// branch into an internal reflection (followed) and a refracted exit ray (shaded at once: a
+// shaded ray needs no storage). Depth counts segments, branches below u_min_weight are cut,
+// TIR keeps everything: the same rules as the CPU.
+// Convex stones: one branch at a time, and each exit found by walking the facets from a first
+// guess (trace/facet_walk.hpp, the CPU twin). NON_CONVEX: the triangles, brute force (a heart
+// has a few hundred), and exit rays that may re-enter through the cleft wait on a small fixed
+// stack as on the CPU.
+in vec3 v_position;  // the entry point, interpolated
+flat in uint v_facet;
 out vec4 o_colour;
 
 uniform int u_facet_count;
@@ -16,6 +19,10 @@ uniform float u_min_weight;
 uniform int u_thesis_weights;  // 1: constant R/T factors; 0: exact Fresnel
 uniform float u_r_factor;
 uniform float u_t_factor;
+// 0: one index; 1: first order, exit directions moved by d(direction)/dn (n(channel) - n)
+// as the table method does; 2: exact, every channel traced at its own index.
+uniform int u_dispersion;
+uniform vec3 u_ior_channel;  // n at the channels' dominant wavelengths
 
 // Weight shares of an interaction at incidence cosine cos_i from index n1 into n2
 // (optics/fresnel.cpp; tracer.cpp split_weight). x: reflected, y: transmitted.
@@ -47,50 +54,122 @@ const float kAir = 1.0;
 
 #ifndef NON_CONVEX
 
-// The entry point: the last plane the ray crosses going in (convex_intersector.cpp).
-bool next_entry(vec3 o, vec3 d, out float t_hit, out int facet) {
-    float t_in = -1e30;
-    float t_out = 1e30;
-    facet = -1;
-    t_hit = 0.0;
-    for (int i = 0; i < u_facet_count; ++i) {
-        vec4 plane = facet_plane(i);
-        float facing = dot(plane.xyz, d);
-        float inside_by = plane.w - dot(plane.xyz, o);
-        if (facing < 0.0) {
-            float t = inside_by / facing;
-            if (t > t_in) {
-                t_in = t;
-                facet = i;
-            }
-        } else if (facing > 0.0) {
-            t_out = min(t_out, inside_by / facing);
-        } else if (inside_by < 0.0) {
-            return false;
-        }
-    }
-    if (facet < 0 || t_in > t_out || t_in < 0.0) return false;
-    t_hit = t_in;
-    return true;
-}
+// The first guess of the exit facet: where a ray from the centre along d leaves.
+uniform highp usamplerCube u_exit_guess;
+// A point counts as on a facet when no neighbour's plane is further below it than this (mm):
+// float rounding of points a few mm from the centre.
+uniform float u_walk_slack;
 
-// The exit point: the first plane the ray crosses going out, never the one it starts on.
-bool next_exit(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet) {
+// Steps a walk may take (the CPU twin's longest on any cut is well below): a bound on the
+// work, never reached on a valid stone.
+const int kMaxWalkSteps = 32;
+
+// Every forward-facing plane, as convex_intersector.cpp does; for a guess that faces away.
+int exit_by_search(vec3 o, vec3 d, int from_facet, out float t_hit) {
     t_hit = 1e30;
-    facet = -1;
+    int facet = -1;
     for (int i = 0; i < u_facet_count; ++i) {
         if (i == from_facet) continue;
         vec4 plane = facet_plane(i);
         float facing = dot(plane.xyz, d);
         if (facing <= 0.0) continue;
-        // A start point a rounding error outside a plane leaves through it where it is.
         float t = max((plane.w - dot(plane.xyz, o)) / facing, 0.0);
         if (t < t_hit) {
             t_hit = t;
             facet = i;
         }
     }
-    return facet >= 0;
+    return facet;
+}
+
+// The exit facet of the ray from o along d inside the stone (facet_walk.hpp): from the guess,
+// move to the neighbour first crossed while the point on the candidate's plane lies outside
+// a neighbour. t falls at every step, in float too (a step must lower it), so it ends.
+int exit_by_walk(vec3 o, vec3 d, int from_facet, out float t_hit) {
+    int g = int(texture(u_exit_guess, d).r);
+    vec4 plane = facet_plane(g);
+    float facing = dot(plane.xyz, d);
+    if (g == from_facet || facing <= 0.0) return exit_by_search(o, d, from_facet, t_hit);
+    float t = max((plane.w - dot(plane.xyz, o)) / facing, 0.0);
+    for (int step = 0; step < kMaxWalkSteps; ++step) {
+        vec3 p = o + t * d;
+        ivec2 slots = facet_neighbour_slots(g);
+        int next = -1;
+        float t_next = t;
+        for (int i = 0; i < slots.y; ++i) {
+            int h = facet_neighbour(slots.x + i);
+            vec4 ph = facet_plane(h);
+            float f = dot(ph.xyz, d);
+            if (f <= 0.0 || h == from_facet) continue;
+            if (dot(ph.xyz, p) - ph.w <= u_walk_slack) continue;
+            float th = max((ph.w - dot(ph.xyz, o)) / f, 0.0);
+            if (th < t_next) {
+                next = h;
+                t_next = th;
+            }
+        }
+        if (next < 0) break;
+        g = next;
+        t = t_next;
+    }
+    t_hit = t;
+    return g;
+}
+
+// d(refracted)/d(eta) of Snell refraction of d through normal n (facing against d) at
+// eta = n1/n2, with d fixed, plus its change with d along dd: a fixed facet chain's exit
+// direction depends on the normals and the index only, so this chain rule is its exact
+// derivative.
+vec3 refraction_derivative(vec3 d, vec3 dd, vec3 n, float eta, float d_eta) {
+    float c = -dot(d, n);
+    float root = sqrt(max(1.0 - eta * eta * (1.0 - c * c), 1e-12));
+    float dc = -dot(dd, n);
+    vec3 by_eta = (d + (c + eta * (1.0 - c * c) / root) * n) * d_eta;
+    vec3 by_d = eta * dd + (eta - eta * eta * c / root) * dc * n;
+    return by_eta + by_d;
+}
+
+// Everything that leaves a convex stone from the ray refracted in at `entry` through `facet`
+// with weight `weight`, traced at index `ior`. With `first_order`, each exit's colour channels
+// are looked up along the direction moved by d(direction)/dn times (u_ior_channel - ior).
+vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float ior,
+                   bool first_order) {
+    vec3 colour = vec3(0.0);
+    vec3 o = entry;
+    float path = 0.0;
+    int from = facet;
+    vec3 dn_channel = u_ior_channel - vec3(ior);
+    for (int depth = 1; depth <= u_max_depth; ++depth) {
+        if (weight <= 0.0 || weight < u_min_weight) break;
+        float t;
+        int exit_facet = exit_by_walk(o, d, from, t);
+        if (exit_facet < 0) break;  // a closed solid always has one
+        vec3 p = o + t * d;
+        vec3 n = facet_plane(exit_facet).xyz;
+        path += t;
+        vec2 split = split_weight(dot(d, n), ior, kAir);
+        vec3 out_dir;
+        float out_weight = weight * split.y;
+        if (split.y > 0.0 && refract_ray(d, -n, ior, kAir, out_dir) &&
+            out_weight >= u_min_weight) {
+            vec3 env;
+            if (first_order) {
+                vec3 dd_out = refraction_derivative(d, dd, -n, ior, 1.0);
+                env = vec3(environment(p, normalize(out_dir + dd_out * dn_channel.r)).r,
+                           environment(p, normalize(out_dir + dd_out * dn_channel.g)).g,
+                           environment(p, normalize(out_dir + dd_out * dn_channel.b)).b);
+            } else {
+                env = environment(p, out_dir);
+            }
+            colour += shade_exit(p, out_dir, n, out_weight, path, env);
+        }
+        o = p;
+        d = reflect(d, n);
+        dd = dd - 2.0 * dot(dd, n) * n;
+        weight *= split.x;
+        from = exit_facet;
+    }
+    return colour;
 }
 
 #else
@@ -142,10 +221,6 @@ bool next_entry_from(vec3 o, vec3 d, int from_facet, out float t_hit, out int fa
     return nearest_triangle(o, d, from_facet, -1.0, t_hit, facet);
 }
 
-bool next_entry(vec3 o, vec3 d, out float t_hit, out int facet) {
-    return next_entry_from(o, d, -1, t_hit, facet);
-}
-
 // As bvh_intersector.cpp's next_exit; its fallback for a start point on an edge (leave where
 // it stands through the steepest neighbour) is approximated by the planes through the point.
 bool next_exit(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet) {
@@ -183,15 +258,18 @@ const int kMaxBranches = 32;
 #endif
 
 void main() {
+    // The pixel's own ray meets the facet the rasteriser found where its plane is: the entry
+    // point as exact as a plane test makes it (the interpolated v_position is a rounding
+    // further off, enough to tip a deep path over an edge).
+    int facet = int(v_facet);
     vec3 origin;
     vec3 direction;
-    camera_ray(v_ndc, origin, direction);
-
-    float t;
-    int facet;
-    if (!next_entry(origin, direction, t, facet)) discard;
-    vec3 entry = origin + t * direction;
-    vec3 n = facet_plane(facet).xyz;
+    camera_ray(fragment_ndc(gl_FragCoord), origin, direction);
+    vec4 entry_plane = facet_plane(facet);
+    vec3 n = entry_plane.xyz;
+    float facing = dot(n, direction);
+    vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
+                              : v_position;
     vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, split.x);
 
@@ -200,30 +278,26 @@ void main() {
 
 #ifndef NON_CONVEX
     // A convex stone holds one branch: the internal reflection; exit rays cannot come back.
-    vec3 o = entry;
-    vec3 d = inward;
-    float weight = refracted ? split.y : 0.0;
-    float path = 0.0;
-    int from = facet;
-    for (int depth = 1; depth <= u_max_depth; ++depth) {
-        if (weight <= 0.0 || weight < u_min_weight) break;
-        if (!next_exit(o, d, from, t, facet)) break;  // a closed solid always has one
-        vec3 p = o + t * d;
-        n = facet_plane(facet).xyz;
-        path += t;
-        split = split_weight(dot(d, n), u_ior, kAir);
-        vec3 out_dir;
-        float out_weight = weight * split.y;
-        if (split.y > 0.0 && refract_ray(d, -n, u_ior, kAir, out_dir) &&
-            out_weight >= u_min_weight) {
-            colour += shade_exit(p, out_dir, n, out_weight, path, environment(p, out_dir));
+    if (u_dispersion == 2) {
+        for (int c = 0; c < 3; ++c) {
+            float ior = u_ior_channel[c];
+            vec2 s = split_weight(-dot(direction, n), kAir, ior);
+            vec3 d;
+            if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
+                colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior, false)[c];
+            }
         }
-        o = p;
-        d = reflect(d, n);
-        weight *= split.x;
-        from = facet;
+    } else if (refracted && split.y > 0.0) {
+        bool first_order = u_dispersion == 1;
+        // d(inward)/dn at the entry: eta = 1/n, d eta/dn = -eta^2.
+        float eta = kAir / u_ior;
+        vec3 dd = first_order
+                      ? refraction_derivative(direction, vec3(0.0), n, eta, -eta * eta)
+                      : vec3(0.0);
+        colour += follow_inside(entry, inward, dd, facet, split.y, u_ior, first_order);
     }
 #else
+    float t;
     Branch stack[kMaxBranches];
     int top = 0;
     if (refracted && split.y > 0.0) {
@@ -276,5 +350,4 @@ void main() {
 #endif
 
     o_colour = vec4(colour, 1.0);
-    gl_FragDepth = window_depth(entry);
 }
