@@ -155,6 +155,9 @@ int main(int argc, char** argv) {
     app.add_option("--db", o.gpu.database, "ray-table database for --method table")
         ->check(CLI::ExistingFile);
     app.add_flag("--blend", o.gpu.blend, "table: blend the two nearest stored views");
+    app.add_option("--fire", o.gpu.fire,
+                   "trace: dispersion none, first (first order, as tables) or exact (per channel)")
+        ->check(CLI::IsMember({"none", "first", "exact"}));
     app.add_option("--ring", o.gpu.ring, "GPU: 'parametric' or a ring OBJ in the stone frame");
     app.add_option("--metal", o.gpu.metal, "ring metal: yellow_gold, white_gold, platinum, silver");
     app.add_option("--frames", o.gpu.frames, "GPU: a turntable of N frames, timed")

@@ -72,6 +72,9 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     setup.shading = settings.shading;
     setup.trace = settings.trace;
     setup.table.blend = o.blend;
+    setup.trace_dispersion = o.fire == "first"   ? gpu::TraceDispersion::first_order
+                             : o.fire == "exact" ? gpu::TraceDispersion::exact
+                                                 : gpu::TraceDispersion::none;
     setup.table.wait_for_views = o.frames == 1;
     auto environment = build_environment(scene);
     if (!environment) return fail(environment.error());

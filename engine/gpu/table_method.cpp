@@ -52,8 +52,8 @@ Result<TableMethod> TableMethod::make(std::shared_ptr<const Database> database,
     return m;
 }
 
-std::uint32_t TableMethod::level_for(double pixels_across) const {
-    const auto& levels = database_->params().levels;
+std::uint32_t table_level_for(const Database& database, double pixels_across, int max_level) {
+    const auto& levels = database.params().levels;
     std::uint32_t level = static_cast<std::uint32_t>(levels.size() - 1);
     for (std::uint32_t i = 0; i < levels.size(); ++i) {
         if (levels[i] >= pixels_across) {
@@ -61,10 +61,12 @@ std::uint32_t TableMethod::level_for(double pixels_across) const {
             break;
         }
     }
-    if (options_.max_level >= 0) {
-        level = std::min(level, static_cast<std::uint32_t>(options_.max_level));
-    }
+    if (max_level >= 0) level = std::min(level, static_cast<std::uint32_t>(max_level));
     return level;
+}
+
+std::uint32_t TableMethod::level_for(double pixels_across) const {
+    return table_level_for(*database_, pixels_across, options_.max_level);
 }
 
 Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acquired,

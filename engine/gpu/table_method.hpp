@@ -44,6 +44,10 @@ struct TableFrameStats {
     double blend = 1.0;       // weight of the nearest view
 };
 
+// The level whose side best serves a stone `pixels_across` pixels wide on screen: the first
+// at least that wide (else the largest), capped at `max_level` when it is not -1.
+std::uint32_t table_level_for(const Database& database, double pixels_across, int max_level = -1);
+
 class TableMethod {
   public:
     static Result<TableMethod> make(std::shared_ptr<const Database> database,

@@ -11,6 +11,7 @@ namespace gem::kiosk {
 
 std::vector<MethodCandidate> method_ladder(int needed_level) {
     std::vector<MethodCandidate> ladder;
+    ladder.push_back({gpu::Method::trace, false, -1, "trace"});
     ladder.push_back({gpu::Method::table, true, -1, "table blend"});
     ladder.push_back({gpu::Method::table, false, -1, "table nearest"});
     if (needed_level > 0) {

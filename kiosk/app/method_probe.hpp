@@ -21,10 +21,9 @@ struct MethodCandidate {
     std::string name;    // for the log line, e.g. "table blend"
 };
 
-// The ladder the probe walks: table blend at the needed level, table nearest, table nearest one
-// level lower (only when `needed_level` > 0, else it would repeat the one before), phong.
-// Trace is left out: it is slower than table nearest at every size measured (README,
-// "Figures"), so it could only be chosen where table blend would also fit.
+// The ladder the probe walks: trace (exact at every view: the facet walk), table blend at the
+// needed level, table nearest, table nearest one level lower (only when `needed_level` > 0,
+// else it would repeat the one before), phong.
 std::vector<MethodCandidate> method_ladder(int needed_level);
 
 // The statistic a candidate is judged by: the 90th percentile of its frame times (nearest

@@ -84,17 +84,17 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
                                   const ProbeOptions& options) {
     const double began_s = seconds_now();
     ProbeResult result;
-    // The first rung decides how many rungs there are: the level the stone's size needs.
+    // The first rung's scene holds the database, which decides how many rungs there are: the
+    // table level the stone's size needs.
     std::vector<MethodCandidate> ladder = method_ladder(0);
     auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
     if (!first) return Error{first.error()};
     int needed_level = 0;
-    if (gpu::TableMethod* table = first.value()->renderer().table()) {
-        auto camera = probe_camera(start, 0.0, first.value()->renderer().scene_radius_mm(), target);
-        if (camera) {
-            needed_level = static_cast<int>(table->level_for(table->database().camera().field_mm /
-                                                             camera.value().pixel_size()));
-        }
+    auto camera = probe_camera(start, 0.0, first.value()->renderer().scene_radius_mm(), target);
+    if (camera) {
+        const Database& db = first.value()->database();
+        needed_level = static_cast<int>(
+            gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
     }
     result.candidates = method_ladder(needed_level);
     result.frame_ms.resize(result.candidates.size());

@@ -51,6 +51,7 @@ class StoneScene {
                                                     const RenderChoice& render);
 
     gpu::FrameRenderer& renderer() { return renderer_.value(); }
+    const Database& database() const { return *database_; }
     const std::string& name() const { return name_; }
     // The band of elevations the stone's database holds (the gestures keep the view inside).
     double min_elevation_deg() const { return min_elevation_deg_; }

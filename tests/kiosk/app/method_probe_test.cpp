@@ -97,25 +97,27 @@ TEST(MethodProbe, AnUnlimitedBudgetTakesTheMostAccurate) {
 
 TEST(MethodProbe, TheLadderRunsFromTheMostAccurateToPhong) {
     const std::vector<MethodCandidate> top = method_ladder(2);
-    ASSERT_EQ(top.size(), 4u);
-    EXPECT_EQ(top[0].method, gpu::Method::table);
-    EXPECT_TRUE(top[0].blend);
-    EXPECT_EQ(top[0].max_level, -1);
-    EXPECT_FALSE(top[1].blend);
+    ASSERT_EQ(top.size(), 5u);
+    EXPECT_EQ(top[0].method, gpu::Method::trace);  // exact at every view
+    EXPECT_EQ(top[1].method, gpu::Method::table);
+    EXPECT_TRUE(top[1].blend);
     EXPECT_EQ(top[1].max_level, -1);
     EXPECT_FALSE(top[2].blend);
-    EXPECT_EQ(top[2].max_level, 1);  // one below the needed level 2
-    EXPECT_EQ(top[3].method, gpu::Method::phong);
+    EXPECT_EQ(top[2].max_level, -1);
+    EXPECT_FALSE(top[3].blend);
+    EXPECT_EQ(top[3].max_level, 1);  // one below the needed level 2
+    EXPECT_EQ(top[4].method, gpu::Method::phong);
     // At level 0 there is nothing coarser: no capped rung.
     const std::vector<MethodCandidate> bottom = method_ladder(0);
-    ASSERT_EQ(bottom.size(), 3u);
-    EXPECT_EQ(bottom[2].method, gpu::Method::phong);
+    ASSERT_EQ(bottom.size(), 4u);
+    EXPECT_EQ(bottom[3].method, gpu::Method::phong);
 }
 
 TEST(MethodProbe, TheLogLineNamesEveryCandidateAndTheChoice) {
     const std::vector<MethodCandidate> ladder = method_ladder(0);
-    const MethodChoice c = choose_method({{20}, {12.3}, {}}, 15.0);
+    const MethodChoice c = choose_method({{31}, {20}, {12.3}, {}}, 15.0);
     const std::string line = describe_choice(ladder, c);
+    EXPECT_NE(line.find("trace 31.0 ms"), std::string::npos) << line;
     EXPECT_NE(line.find("table blend 20.0 ms"), std::string::npos) << line;
     EXPECT_NE(line.find("table nearest 12.3 ms"), std::string::npos) << line;
     EXPECT_NE(line.find("phong not measured"), std::string::npos) << line;

@@ -216,7 +216,7 @@ TEST(ConfigErrors, UnknownChoicesNameTheChoices) {
     EXPECT_EQ(load.config.input.rotation_deg, -1);
     EXPECT_EQ(load.config.gestures.tap, TapAction::next_stone);
     EXPECT_EQ(load.config.gestures.two_finger_tap, TapAction::none);
-    EXPECT_EQ(load.config.render.method, RenderMethod::table);
+    EXPECT_EQ(load.config.render.method, RenderMethod::automatic);
 }
 
 TEST(ConfigErrors, ZoomLimitsOutOfOrderGoBackToTheDefaults) {
@@ -269,7 +269,7 @@ TEST(ConfigErrors, MissingFileIsOneMessageAndDefaults) {
 TEST(ConfigErrors, EmptyTextIsAllDefaultsWithoutErrors) {
     const ConfigLoad load = parse_config("", "t.toml", "");
     EXPECT_TRUE(load.errors.empty());
-    EXPECT_EQ(load.config.render.method, RenderMethod::table);
+    EXPECT_EQ(load.config.render.method, RenderMethod::automatic);
     EXPECT_EQ(load.config.log_level, LogLevel::info);
 }
 
