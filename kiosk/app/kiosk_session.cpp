@@ -302,11 +302,12 @@ void KioskSession::choose_render_method() {
                                              config_.render.auto_headroom);
     if (!std::isfinite(budget_ms)) {
         // No target rate (a headless display drawing as fast as it can): nothing to hold, so
-        // the most accurate candidate without spending seconds measuring it.
+        // the most accurate candidate without spending seconds measuring it (exact fire
+        // draws as plain trace where a database stores no dispersion).
         probed_size_ = size;
-        render_ = apply_candidate(render_, method_ladder(0).front());
-        log_info("render.method auto: no frame rate to hold; using " +
-                 method_ladder(0).front().name);
+        const MethodCandidate best = method_ladder(0, true).front();
+        render_ = apply_candidate(render_, best);
+        log_info("render.method auto: no frame rate to hold; using " + best.name);
         return;
     }
     // Marked before probing: a probe that fails is not tried again once frames are on screen.
@@ -329,7 +330,7 @@ void KioskSession::choose_render_method() {
     if (r.choice.fits) {
         log_info(line);
     } else {
-        log_warning(line + "; no method holds the frame rate, using the fastest");
+        log_warning(line + "; no method holds the frame rate, using the fastest refractive one");
     }
 }
 

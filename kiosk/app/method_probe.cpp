@@ -9,8 +9,9 @@
 
 namespace gem::kiosk {
 
-std::vector<MethodCandidate> method_ladder(int needed_level) {
+std::vector<MethodCandidate> method_ladder(int needed_level, bool dispersion) {
     std::vector<MethodCandidate> ladder;
+    if (dispersion) ladder.push_back({gpu::Method::trace, false, -1, "trace exact fire", true});
     ladder.push_back({gpu::Method::trace, false, -1, "trace"});
     ladder.push_back({gpu::Method::table, true, -1, "table blend"});
     ladder.push_back({gpu::Method::table, false, -1, "table nearest"});
@@ -28,33 +29,44 @@ std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms) {
     return quantile(std::move(frame_ms), kFrameTimeQuantile);
 }
 
+std::size_t refractive_rungs(const std::vector<MethodCandidate>& ladder) {
+    return static_cast<std::size_t>(
+        std::count_if(ladder.begin(), ladder.end(),
+                      [](const MethodCandidate& c) { return c.method != gpu::Method::phong; }));
+}
+
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
-                           double budget_ms) {
+                           double budget_ms, std::size_t fallbacks) {
     MethodChoice choice;
     choice.budget_ms = budget_ms;
     const std::size_t n = frame_ms_per_candidate.size();
     choice.index = n > 0 ? n - 1 : 0;
-    double fastest = std::numeric_limits<double>::infinity();
-    std::optional<std::size_t> fastest_index;
     for (std::size_t i = 0; i < n; ++i) {
         choice.statistic_ms.push_back(frame_time_statistic_ms(frame_ms_per_candidate[i]));
     }
     for (std::size_t i = 0; i < n; ++i) {
         const auto& s = choice.statistic_ms[i];
-        if (!s) continue;
-        if (*s <= budget_ms) {
+        if (s && *s <= budget_ms) {
             choice.index = i;
             choice.fits = true;
             choice.valid = true;
             return choice;
         }
-        if (*s < fastest) {  // strict: the earlier, more accurate one keeps a tie
-            fastest = *s;
-            fastest_index = i;
-        }
     }
-    if (fastest_index) {
-        choice.index = *fastest_index;
+    // The fastest in [begin, end), strict so that the earlier, more accurate one keeps a tie.
+    auto fastest_in = [&](std::size_t begin, std::size_t end) {
+        std::optional<std::size_t> best;
+        for (std::size_t i = begin; i < end; ++i) {
+            const auto& s = choice.statistic_ms[i];
+            if (s && (!best || *s < *choice.statistic_ms[*best])) best = i;
+        }
+        return best;
+    };
+    const std::size_t split = std::min(fallbacks, n);
+    std::optional<std::size_t> pick = fastest_in(0, split);
+    if (!pick) pick = fastest_in(split, n);
+    if (pick) {
+        choice.index = *pick;
         choice.valid = true;
     }
     return choice;

@@ -5,6 +5,7 @@
 // with the frame times a short probe measured, and the frame budget. method_probe_run.hpp does
 // the measuring.
 
+#include <cstdint>
 #include <optional>
 #include <string>
 #include <vector>
@@ -17,14 +18,17 @@ namespace gem::kiosk {
 struct MethodCandidate {
     gpu::Method method = gpu::Method::table;
     bool blend = false;
-    int max_level = -1;  // table: highest ray-table level shown; -1: the level the size needs
-    std::string name;    // for the log line, e.g. "table blend"
+    int max_level = -1;       // table: highest ray-table level shown; -1: the level the size needs
+    std::string name;         // for the log line, e.g. "table blend"
+    bool exact_fire = false;  // trace: each colour channel traced at its own index
 };
 
-// The ladder the probe walks: trace (exact at every view: the facet walk), table blend at the
-// needed level, table nearest, table nearest one level lower (only when `needed_level` > 0,
-// else it would repeat the one before), phong.
-std::vector<MethodCandidate> method_ladder(int needed_level);
+// The ladder the probe walks: trace with exact fire (each channel at its own index, for a
+// database that stores dispersion), trace (exact at every view: the facet walk; fire to first
+// order), table blend at the needed level, table nearest, table nearest one level lower (only
+// when `needed_level` > 0, else it would repeat the one before), phong. Without dispersion the
+// first two rungs draw the same, and the first is left out (`dispersion` false).
+std::vector<MethodCandidate> method_ladder(int needed_level, bool dispersion = false);
 
 // The statistic a candidate is judged by: the 90th percentile of its frame times (nearest
 // rank, so it is one of the measured values). A median would pass a method that streams a new
@@ -45,11 +49,16 @@ struct MethodChoice {
 
 // budget_ms = headroom / target rate: the share of a frame period the stone may take (the rest
 // goes to compositing, the cross-fade and presenting). The FIRST candidate whose statistic is
-// within the budget wins; if none is, the one with the smallest statistic (the earlier one on a
-// tie). A candidate without a usable measurement is never chosen; when no candidate has one the
-// choice is invalid and index points at the last, cheapest candidate.
+// within the budget wins; if none is, the one with the smallest statistic among the first
+// `fallbacks` candidates (the earlier one on a tie): the ladder passes its refractive rungs, so
+// a machine too slow for every method still shows a refracting stone, not phong's flat one,
+// which is chosen only when it alone holds the rate. A candidate without a usable measurement
+// is never chosen; when none of the fallbacks has one, the fastest of the rest is; when no
+// candidate has one the choice is invalid and index points at the last, cheapest candidate.
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
-                           double budget_ms);
+                           double budget_ms, std::size_t fallbacks = SIZE_MAX);
+// The candidates that may stand in when none holds the rate: every rung but phong.
+std::size_t refractive_rungs(const std::vector<MethodCandidate>& ladder);
 
 // The frame budget in ms: headroom × 1000 / rate, rate = render.frame_rate_hz when positive,
 // else the display's refresh; no positive rate (a headless display drawing as fast as it can)

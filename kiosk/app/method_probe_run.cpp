@@ -75,6 +75,7 @@ RenderChoice apply_candidate(RenderChoice base, const MethodCandidate& candidate
     base.method = candidate.method;
     base.blend = candidate.blend;
     base.max_level = candidate.max_level;
+    base.exact_fire = candidate.exact_fire;
     return base;
 }
 
@@ -90,24 +91,27 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
     auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
     if (!first) return Error{first.error()};
     int needed_level = 0;
+    const Database& db = first.value()->database();
     auto camera = probe_camera(start, 0.0, first.value()->renderer().scene_radius_mm(), target);
     if (camera) {
-        const Database& db = first.value()->database();
         needed_level = static_cast<int>(
             gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
     }
-    result.candidates = method_ladder(needed_level);
+    result.candidates = method_ladder(needed_level, db.params().dispersion);
     result.frame_ms.resize(result.candidates.size());
     std::unique_ptr<StoneScene> scene = std::move(first).value();
+    // With dispersion the ladder starts with a rung the first scene does not draw.
+    if (result.candidates.front().exact_fire != ladder.front().exact_fire) scene.reset();
     for (std::size_t i = 0; i < result.candidates.size(); ++i) {
-        if (i > 0) {
+        if (i > 0 || !scene) {
             scene.reset();  // one scene's GL objects at a time
             auto made = StoneScene::make(stone, look, apply_candidate(base, result.candidates[i]));
             if (!made) continue;  // never measured, never chosen
             scene = std::move(made).value();
         }
         result.frame_ms[i] = measure(*scene, target, start, budget_ms, options);
-        result.choice = choose_method(result.frame_ms, budget_ms);
+        result.choice =
+            choose_method(result.frame_ms, budget_ms, refractive_rungs(result.candidates));
         if (result.choice.fits) break;
     }
     result.seconds = seconds_now() - began_s;

@@ -74,10 +74,11 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     // leave only the ring on screen. 0.8 is the scene default gemrender uses (scene/scene.hpp).
     if (render.method == gpu::Method::phong) setup.shading.alpha = Scene{}.alpha;
     setup.trace.max_depth = render.depth;
-    // Fire as the tables show it: where the database stores dispersion, trace moves each
-    // exit's colour channels by their direction's derivative too.
+    // Fire where the database stores it: each colour channel traced at its own index, or as
+    // the tables show it, each exit's channels moved by their direction's derivative.
     if (scene->database_->params().dispersion) {
-        setup.trace_dispersion = gpu::TraceDispersion::first_order;
+        setup.trace_dispersion =
+            render.exact_fire ? gpu::TraceDispersion::exact : gpu::TraceDispersion::first_order;
     }
     setup.table.blend = render.blend;
     setup.table.max_level = render.max_level;

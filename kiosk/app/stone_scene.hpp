@@ -37,7 +37,10 @@ struct RenderChoice {
     gpu::Method method = gpu::Method::table;
     bool blend = false;
     int cube_face = 256;
-    int depth = 8;       // trace: internal segments followed
+    int depth = 8;  // trace: internal segments followed
+    // trace, where the database stores dispersion: every colour channel traced at its own
+    // index (exact fire, three times the work) instead of first order.
+    bool exact_fire = false;
     int max_level = -1;  // table: highest ray-table level shown; -1: none
     std::size_t cache_bytes = std::size_t{256} << 20;
     bool wait_for_views = false;  // a single still (tests, snapshots) waits for exact views

@@ -5,7 +5,8 @@
 // ms per frame (each bounded by glFinish) over a turn of 1° a frame at 40° elevation, the
 // stone's pixels (counted on the CPU by the exact tracer's entry test), ms per million stone
 // pixels, and the ratio to phong on the same view. The table method reads a database of the
-// diamond at 256/1024 px every 10°, traced to the same depth.
+// diamond at 256/1024 px every 10°, traced to the same depth. Last, the heart in ruby (not
+// convex: trace tests its triangles instead of walking facets) beside phong.
 //
 //   bench_gpu [--frames N] [--quick]
 // --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
@@ -186,28 +187,44 @@ int main(int argc, char** argv) {
 
     std::printf("%-18s %-24s %9s %9s %8s %10s %8s\n", "view", "method", "ms/frame", "stone Mpx",
                 "stone %", "ms/Mpx", "×phong");
-    for (const View& v : views) {
-        // The stone's pixels at the turn's middle frame (a turn of a few degrees barely moves
-        // its outline).
-        auto probe = gem::gpu::FrameRenderer::make([&] {
-            gem::gpu::FrameSetup s;
-            s.method = Method::phong;
-            s.stone = stone.value();
-            s.environment = &environment;
-            if (v.ring) s.ring = &ring.value();
-            return s;
-        }());
-        const gem::Camera middle = camera_for(v, probe.value(), frames / 2);
-        const long pixels = stone_pixels(stone.value(), middle);
-        const double mpx = pixels / 1e6;
-        double phong_ms = 0.0;
-        for (const Case& c : cases) {
-            const double ms = run(c, v, stone.value(), db, environment, ring.value(), frames);
-            if (c.method == Method::phong) phong_ms = ms;
-            std::printf("%-18s %-24s %9.1f %9.3f %7.1f%% %10.1f %8.2f\n", v.name, c.name, ms, mpx,
-                        100.0 * pixels / (static_cast<double>(v.width) * v.height), ms / mpx,
-                        ms / phong_ms);
-            std::fflush(stdout);
+    auto heart =
+        gem::make_cut(gem::default_cut_params(gem::CutShape::heart), *gem::find_material("ruby"));
+    struct Subject {
+        const gem::Stone* stone;
+        std::vector<View> views;
+        std::vector<Case> cases;
+    };
+    std::vector<Subject> subjects = {
+        {&stone.value(), views, cases},
+        {&heart.value(),
+         {{"heart 1024² z 1", 1024, 1024, 1.0, 40.0, false},
+          {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
+         {{"phong", Method::phong}, {"trace depth 7 (mesh)", Method::trace}}}};
+    if (quick) subjects.resize(1);
+    for (const Subject& st : subjects) {
+        for (const View& v : st.views) {
+            // The stone's pixels at the turn's middle frame (a turn of a few degrees barely moves
+            // its outline).
+            auto probe = gem::gpu::FrameRenderer::make([&] {
+                gem::gpu::FrameSetup s;
+                s.method = Method::phong;
+                s.stone = *st.stone;
+                s.environment = &environment;
+                if (v.ring) s.ring = &ring.value();
+                return s;
+            }());
+            const gem::Camera middle = camera_for(v, probe.value(), frames / 2);
+            const long pixels = stone_pixels(*st.stone, middle);
+            const double mpx = pixels / 1e6;
+            double phong_ms = 0.0;
+            for (const Case& c : st.cases) {
+                const double ms = run(c, v, *st.stone, db, environment, ring.value(), frames);
+                if (c.method == Method::phong) phong_ms = ms;
+                std::printf("%-18s %-24s %9.1f %9.3f %7.1f%% %10.1f %8.2f\n", v.name, c.name, ms,
+                            mpx, 100.0 * pixels / (static_cast<double>(v.width) * v.height),
+                            ms / mpx, ms / phong_ms);
+                std::fflush(stdout);
+            }
         }
     }
     return 0;

@@ -70,6 +70,20 @@ TEST(MethodProbe, NoneFitsTakesTheFastestAndSaysSo) {
     EXPECT_EQ(c.index, 1u);
 }
 
+TEST(MethodProbe, NoneFitsNeverFallsBackToTheFlatBaseline) {
+    // Phong (last, 80 ms) is the fastest but not among the 2 fallbacks: the faster of those.
+    const MethodChoice c = choose_method({{300}, {150}, {80}}, 13.3, 2);
+    EXPECT_FALSE(c.fits);
+    EXPECT_EQ(c.index, 1u);
+    // Phong that holds the rate is still chosen.
+    EXPECT_EQ(choose_method({{300}, {150}, {10}}, 13.3, 2).index, 2u);
+    // Fallbacks without measurements: the fastest of the rest.
+    EXPECT_EQ(choose_method({{kNaN}, {}, {80}}, 13.3, 2).index, 2u);
+    // The ladder's fallbacks are its refractive rungs: all but phong.
+    EXPECT_EQ(refractive_rungs(method_ladder(2, true)), 5u);
+    EXPECT_EQ(refractive_rungs(method_ladder(0)), 3u);
+}
+
 TEST(MethodProbe, ATieAmongTooSlowCandidatesKeepsTheMoreAccurate) {
     const MethodChoice c = choose_method({{90}, {40}, {40}}, 10.0);
     EXPECT_FALSE(c.fits);
@@ -107,6 +121,14 @@ TEST(MethodProbe, TheLadderRunsFromTheMostAccurateToPhong) {
     EXPECT_FALSE(top[3].blend);
     EXPECT_EQ(top[3].max_level, 1);  // one below the needed level 2
     EXPECT_EQ(top[4].method, gpu::Method::phong);
+    // A database with dispersion gets exact fire first; the rest is the same ladder.
+    const std::vector<MethodCandidate> fire = method_ladder(2, true);
+    ASSERT_EQ(fire.size(), 6u);
+    EXPECT_EQ(fire[0].method, gpu::Method::trace);
+    EXPECT_TRUE(fire[0].exact_fire);
+    EXPECT_FALSE(fire[1].exact_fire);
+    EXPECT_EQ(fire[1].method, gpu::Method::trace);
+    EXPECT_EQ(fire[5].method, gpu::Method::phong);
     // At level 0 there is nothing coarser: no capped rung.
     const std::vector<MethodCandidate> bottom = method_ladder(0);
     ASSERT_EQ(bottom.size(), 4u);
