@@ -105,6 +105,12 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     auto renderer = gpu::FrameRenderer::make(std::move(setup));
     if (!renderer) return fail(renderer.error());
     gpu::FrameRenderer& r = renderer.value();
+    if (const gpu::TraceMethod* trace = r.trace(); trace != nullptr && r.stone().convex) {
+        std::printf(
+            "gemrender: trace finds exits by %s (64×64 test: walk %.2f ms, constants "
+            "%.2f ms)\n",
+            gpu::to_string(trace->exit_search()), trace->walk_ms(), trace->constants_ms());
+    }
     auto target = gpu::RenderTarget::make(scene.width, scene.height);
     if (!target) return fail(target.error());
     target.value().bind();

@@ -63,6 +63,7 @@ class FrameRenderer {
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
     TableMethod* table() { return table_.get(); }
+    const TraceMethod* trace() const { return trace_.get(); }
 
   private:
     FrameRenderer() = default;

@@ -28,9 +28,11 @@ std::vector<ProgramSpec> all_program_specs() {
     };
 }
 
-Result<Program> build_program(const std::string& name) {
-    for (const ProgramSpec& spec : all_program_specs()) {
-        if (spec.name == name) return Program::build(spec);
+Result<Program> build_program(const std::string& name, const std::vector<std::string>& defines) {
+    for (ProgramSpec spec : all_program_specs()) {
+        if (spec.name != name) continue;
+        spec.defines.insert(spec.defines.end(), defines.begin(), defines.end());
+        return Program::build(spec);
     }
     return Error{"no GPU program named '" + name + "'"};
 }

@@ -12,6 +12,8 @@ namespace gem::gpu {
 // Names: "background", "table", "table_non_convex", "trace", "trace_non_convex", "phong",
 // "ring", ... (see program_catalog.cpp).
 std::vector<ProgramSpec> all_program_specs();
-Result<Program> build_program(const std::string& name);
+// `defines` are added to the program's own.
+Result<Program> build_program(const std::string& name,
+                              const std::vector<std::string>& defines = {});
 
 }  // namespace gem::gpu

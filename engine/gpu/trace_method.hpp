@@ -2,8 +2,11 @@
 // The trace method (DESIGN.md, "Methods side by side"): exact tracing per fragment of the
 // stone pass, with the exact tracer's rules (trace/tracer.hpp: depth, weight threshold,
 // Fresnel or thesis R/T weights), shaded with shading.glsl. No tables, so it is exact at every
-// view. Convex stones find each exit by walking the facets from a first guess (trace.frag,
-// trace/facet_walk.hpp); non-convex ones test their triangles.
+// view. Non-convex stones test their triangles. Convex stones find each exit one of two ways,
+// both exact (trace.frag): by walking the facets from a first guess (a handful of planes read
+// from the uniform block per bounce; trace/facet_walk.hpp) or by testing every plane, written
+// into the shader as constants (no reads, no divergence). Which is faster depends on the GPU,
+// so by default make() times both on a small picture and keeps the faster.
 
 #include "geometry/stone.hpp"
 #include "gpu/frame_uniforms.hpp"
@@ -21,21 +24,35 @@ enum class TraceDispersion {
     exact,        // each colour channel traced at its own index (three times the work)
 };
 
+// How a convex stone's exits are found.
+enum class ExitSearch { walk, constants, measured };
+const char* to_string(ExitSearch search);
+
 class TraceMethod {
   public:
-    // Uploads the stone (StoneGeometry) and builds the program (convex or non-convex variant).
-    static Result<TraceMethod> make(const Stone& stone);
+    // Uploads the stone (StoneGeometry) and builds the program (non-convex, or the convex
+    // variant `search` names; `measured` builds both and keeps the faster on a 64×64 test
+    // picture, drawn off screen; the caller's framebuffer and viewport are kept).
+    static Result<TraceMethod> make(const Stone& stone, ExitSearch search = ExitSearch::measured);
     // Draws the stone layer for `frame` into the bound framebuffer (viewport set by caller).
     // `trace` gives depth, weight threshold, weight model (fresnel or thesis R/T factors) and
     // r/t factors; the refractive index traced with is frame.material.index().
     Result<bool> draw(const StoneFrame& frame, const TraceSettings& trace,
                       TraceDispersion dispersion = TraceDispersion::none);
 
+    // The convex search in use (walk for a non-convex stone, which uses neither), and what the
+    // measurement gave (ms for the test picture; 0 when not measured).
+    ExitSearch exit_search() const { return search_; }
+    double walk_ms() const { return walk_ms_; }
+    double constants_ms() const { return constants_ms_; }
+
   private:
-    TraceMethod(StoneGeometry geometry, Program program, double radius_mm);
+    TraceMethod(StoneGeometry geometry, Program program);
     StoneGeometry geometry_;
     Program program_;
-    double radius_mm_ = 0.0;
+    ExitSearch search_ = ExitSearch::walk;
+    double walk_ms_ = 0.0;
+    double constants_ms_ = 0.0;
 };
 
 }  // namespace gem::gpu

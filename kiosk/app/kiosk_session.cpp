@@ -281,6 +281,14 @@ void KioskSession::rebuild_scene(double now_s) {
         return;
     }
     scene_ = std::move(made).value();
+    if (const gpu::TraceMethod* trace = scene_->renderer().trace();
+        trace != nullptr && scene_->renderer().stone().convex) {
+        char line[160];
+        std::snprintf(
+            line, sizeof line, "trace: exits by %s (64x64 test: walk %.2f ms, constants %.2f ms)",
+            gpu::to_string(trace->exit_search()), trace->walk_ms(), trace->constants_ms());
+        log_info(line);
+    }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }
 

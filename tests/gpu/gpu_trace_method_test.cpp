@@ -40,6 +40,7 @@ struct Case {
     std::optional<glm::dvec3> body_colour;
     glm::dvec3 absorption{0.0};
     bool as_mesh = false;  // trace a convex cut through the triangles, as a non-convex one
+    gpu::ExitSearch search = gpu::ExitSearch::measured;
 };
 
 struct Comparison {
@@ -118,7 +119,7 @@ std::optional<Comparison> compare(const Case& c) {
     const Environment environment = Environment::studio();
     auto cube = gpu::EnvironmentCube::from_environment(environment, kCubeFace);
     auto background = gpu::BackgroundPass::make();
-    auto method = gpu::TraceMethod::make(s);
+    auto method = gpu::TraceMethod::make(s, c.search);
     auto target = gpu::RenderTarget::make(kSize, kSize);
     auto plane = gpu::build_program("background");
     EXPECT_TRUE(cube.ok() && background.ok() && method.ok() && target.ok() && plane.ok())
@@ -294,6 +295,37 @@ TEST(GpuTraceMethod, ThesisWeightsWithColourAndAlphaMatchCpuTracer) {
     c.shading.lights = two_lights();
     c.body_colour = glm::dvec3(0.85, 0.2, 0.3);
     expect_close(compare(c), 45.0, 44.0);
+}
+
+// Both ways of finding a convex stone's exits, each forced (the default measures and keeps one).
+TEST(GpuTraceMethod, FacetWalkAndConstantPlanesBothMatchCpuTracer) {
+    for (gpu::ExitSearch search : {gpu::ExitSearch::walk, gpu::ExitSearch::constants}) {
+        Case c;
+        c.name = search == gpu::ExitSearch::walk ? "walk" : "constants";
+        c.camera = three_quarter_view();
+        c.trace = trace_settings(12);
+        c.shading.lights = two_lights();
+        c.search = search;
+        expect_close(compare(c), 45.0, 44.0);
+    }
+}
+
+TEST(GpuTraceMethod, MeasuredSearchSaysWhatItChoseAndWhy) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto stone = make_cut(default_cut_params(CutShape::round_brilliant), material_for(Case{}));
+    ASSERT_TRUE(stone.ok()) << stone.error();
+    auto method = gpu::TraceMethod::make(stone.value());
+    ASSERT_TRUE(method.ok()) << method.error();
+    const auto& m = method.value();
+    ASSERT_GT(m.walk_ms(), 0.0);
+    ASSERT_GT(m.constants_ms(), 0.0);
+    EXPECT_EQ(m.exit_search(),
+              m.walk_ms() <= m.constants_ms() ? gpu::ExitSearch::walk : gpu::ExitSearch::constants);
+    auto forced = gpu::TraceMethod::make(stone.value(), gpu::ExitSearch::walk);
+    ASSERT_TRUE(forced.ok()) << forced.error();
+    EXPECT_EQ(forced.value().exit_search(), gpu::ExitSearch::walk);
+    EXPECT_EQ(forced.value().walk_ms(), 0.0);  // not measured
 }
 
 // The triangle path (NON_CONVEX: Moller-Trumbore in float, cleft stack) on a stone the plane

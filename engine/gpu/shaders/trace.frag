@@ -5,7 +5,8 @@
 // shaded ray needs no storage). Depth counts segments, branches below u_min_weight are cut,
 // TIR keeps everything: the same rules as the CPU.
 // Convex stones: one branch at a time, and each exit found by walking the facets from a first
-// guess (trace/facet_walk.hpp, the CPU twin). NON_CONVEX: the triangles, brute force (a heart
+// guess (trace/facet_walk.hpp, the CPU twin), or with EXIT_UNROLLED by testing every plane,
+// written into the shader as constants (trace_method.cpp measures which is faster). NON_CONVEX: the triangles, brute force (a heart
 // has a few hundred), and exit rays that may re-enter through the cleft wait on a small fixed
 // stack as on the CPU.
 in vec3 v_position;  // the entry point, interpolated
@@ -56,13 +57,30 @@ const float kAir = 1.0;
 
 // The first guess of the exit facet: where a ray from the centre along d leaves.
 uniform highp usamplerCube u_exit_guess;
-// A point counts as on a facet when no neighbour's plane is further below it than this (mm):
-// float rounding of points a few mm from the centre.
-uniform float u_walk_slack;
 
 // Steps a walk may take (the CPU twin's longest on any cut is well below): a bound on the
 // work, never reached on a valid stone.
 const int kMaxWalkSteps = 32;
+
+#ifdef EXIT_UNROLLED
+// Every plane as constants, unrolled (STONE_EXIT_PLANES: trace_method.cpp writes one
+// EXIT_PLANE(index, n.x, n.y, n.z, d) per facet): no memory reads and no divergent loop, which a
+// SIMD rasteriser (llvmpipe) runs faster than the walk's few scattered reads.
+#define EXIT_PLANE(i, nx, ny, nz, w)                              \
+    {                                                              \
+        float f = dot(vec3(nx, ny, nz), d);                        \
+        float t = max((w - dot(vec3(nx, ny, nz), o)) / f, 0.0);    \
+        bool better = f > 0.0 && i != from_facet && t < t_hit;     \
+        t_hit = better ? t : t_hit;                                \
+        facet = better ? i : facet;                                \
+    }
+int exit_by_constants(vec3 o, vec3 d, int from_facet, out float t_hit) {
+    t_hit = 1e30;
+    int facet = -1;
+    STONE_EXIT_PLANES
+    return facet;
+}
+#endif
 
 // Every forward-facing plane, as convex_intersector.cpp does; for a guess that faces away.
 int exit_by_search(vec3 o, vec3 d, int from_facet, out float t_hit) {
@@ -101,7 +119,9 @@ int exit_by_walk(vec3 o, vec3 d, int from_facet, out float t_hit) {
             vec4 ph = facet_plane(h);
             float f = dot(ph.xyz, d);
             if (f <= 0.0 || h == from_facet) continue;
-            if (dot(ph.xyz, p) - ph.w <= u_walk_slack) continue;
+            // On or inside h's plane (a point within rounding of an edge may go either way:
+            // the step below must lower t, so neither choice can loop).
+            if (dot(ph.xyz, p) - ph.w <= 0.0) continue;
             float th = max((ph.w - dot(ph.xyz, o)) / f, 0.0);
             if (th < t_next) {
                 next = h;
@@ -142,7 +162,11 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
     for (int depth = 1; depth <= u_max_depth; ++depth) {
         if (weight <= 0.0 || weight < u_min_weight) break;
         float t;
+#ifdef EXIT_UNROLLED
+        int exit_facet = exit_by_constants(o, d, from, t);
+#else
         int exit_facet = exit_by_walk(o, d, from, t);
+#endif
         if (exit_facet < 0) break;  // a closed solid always has one
         vec3 p = o + t * d;
         vec3 n = facet_plane(exit_facet).xyz;
