@@ -3,7 +3,7 @@
 devices, systemd starting the packaged service with its user, logind session and sandbox.
 
   vm_test.py --build-dir BUILD --source-dir SRC --work-dir DIR --gemkiosk PROGRAM
-             --gemtables PROGRAM [--short]
+             --gemtables PROGRAM [--short] [--accel auto|kvm|tcg]
 
 Builds the Debian package (cpack) and two small catalogues (gemtables), makes the guest's disk
 (image.sh), boots it under QEMU and checks, from the host:
@@ -32,7 +32,7 @@ import time
 sys.dont_write_bytecode = True
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 import vm_image  # noqa: E402
-from vm_machine import Machine, VmError  # noqa: E402
+from vm_machine import Machine, QemuMissing, VmError, choose_accelerator  # noqa: E402
 
 SKIP = 77
 HERE = os.path.dirname(os.path.abspath(__file__))
@@ -398,15 +398,27 @@ def main():
     parser.add_argument("--short", action="store_true",
                         help="boot, first frame and a drag only")
     parser.add_argument("--cpus", type=int, default=2)
+    parser.add_argument("--accel", choices=("auto", "kvm", "tcg"), default="auto",
+                        help="auto: the first of KVM's CPU models that QEMU runs here, else "
+                        "plain emulation (TCG); kvm or tcg: that one or fail")
     args = parser.parse_args()
     args.work_dir = os.path.abspath(args.work_dir)
     os.makedirs(args.work_dir, exist_ok=True)
-    if shutil.which("qemu-system-x86_64") is None:
-        log("skipped: qemu-system-x86_64 is not installed (scripts/install-deps.sh)")
+
+    began = time.monotonic()
+    # Tried before anything is built: the guest's disk depends on it.
+    try:
+        choice = choose_accelerator(accelerator=args.accel, cpus=args.cpus)
+    except QemuMissing as missing:
+        log(f"skipped: {missing} (scripts/install-deps.sh installs QEMU)")
         return SKIP
+    except VmError as failure:
+        log(f"FAILED: {failure}")
+        return 1
+    for line in choice.report():
+        log(line)
 
     host = Host(args)
-    began = time.monotonic()
     log("building the package and the catalogues")
     deb = host.package()
     catalogues = host.catalogues()
@@ -421,8 +433,8 @@ def main():
     log(f"image ready after {time.monotonic() - began:.0f} s")
 
     figures = {}
-    machine = Machine(image, args.work_dir, cpus=args.cpus)
-    log(f"booting under QEMU ({machine.accelerator}, {args.cpus} CPUs)")
+    machine = Machine(image, args.work_dir, choice, cpus=args.cpus)
+    log(f"booting under QEMU ({choice.describe()}, {args.cpus} CPUs)")
     try:
         shell = machine.connect_shell(timeout_s=600)
         log(f"the guest's shell answered after {time.monotonic() - machine.started:.0f} s")
