@@ -52,6 +52,10 @@ if accel == "kvm" and MODE == "silent-kvm":
     connection, _ = server.accept()
     time.sleep(3600)
 dies_late = accel == "kvm" and MODE == "kvm-dies-late" and cpu == "host"
+# A kernel to boot: its first line on the serial port, unless this KVM cannot run it.
+if "-kernel" in args and not (accel == "kvm" and MODE == "kvm-kernel-hangs"):
+    with open(value("-serial").split("file:")[1], "w") as f:
+        f.write("[    0.000000] Linux version 6.1.0-50-amd64 (debian-kernel@lists.debian.org)\n")
 
 connection, _ = server.accept()
 stream = connection.makefile("rw")
@@ -125,6 +129,30 @@ class ChooseAccelerator(unittest.TestCase):
         self.assertTrue(choice.report()[1].startswith("passed over kvm with -cpu host: QEMU "
                                                       "killed by SIGABRT"))
 
+    def test_with_a_kernel_the_choice_is_the_same_where_it_boots(self):
+        kernel = os.path.join(self.folder, "vmlinuz")
+        open(kernel, "w").close()
+        choice = self.choose("msr-refused", kernel=kernel, kernel_timeout_s=2.0)
+        self.assertEqual(choice.candidate, Candidate("kvm", "host,-arch-capabilities"))
+        _, calls = self.tried()
+        self.assertEqual(calls[-1][calls[-1].index("-kernel") + 1], kernel)
+
+    def test_kvm_that_starts_but_cannot_run_the_kernel_is_passed_over(self):
+        kernel = os.path.join(self.folder, "vmlinuz")
+        open(kernel, "w").close()
+        began = time.monotonic()
+        choice = self.choose("kvm-kernel-hangs", kernel=kernel, kernel_timeout_s=1.0)
+        self.assertEqual(choice.candidate, Candidate("tcg", "max"))
+        self.assertEqual(len(choice.passed_over), 3)
+        for _, reason in choice.passed_over:
+            self.assertEqual(reason, "QEMU runs, but the guest's kernel printed nothing in 1 s")
+        self.assertLess(time.monotonic() - began, 15.0)
+
+    def test_without_a_kernel_such_a_kvm_looks_usable(self):
+        # What the firmware-only probe can see: the reason to give it the guest's kernel.
+        choice = self.choose("kvm-kernel-hangs")
+        self.assertEqual(choice.candidate, Candidate("kvm", "host"))
+
     def test_no_kvm_at_all_falls_back_to_tcg(self):
         choice = self.choose("no-kvm")
         self.assertEqual(choice.candidate, Candidate("tcg", "max"))
@@ -171,6 +199,8 @@ class ChooseAccelerator(unittest.TestCase):
             vm_machine.choose_accelerator(qemu=os.path.join(self.folder, "no-such-qemu"),
                                           timeout_s=1.0, settle_s=0.1)
         self.assertIn("cannot run", str(raised.exception))
+        with self.assertRaises(vm_machine.QemuMissing):
+            vm_machine.qemu_version(os.path.join(self.folder, "no-such-qemu"))
 
 
 if __name__ == "__main__":

@@ -8,9 +8,11 @@ object per line; asynchronous events interleave with replies and are skipped her
 
 The accelerator and CPU model are chosen by starting QEMU with each in turn
 (choose_accelerator): a /dev/kvm that opens says nothing about whether the host's hypervisor
-accepts the CPU model. Under a hypervisor that refuses IA32_ARCH_CAPABILITIES (MSR 0x10a) to
-its guests, `-cpu host` and `-cpu max` abort in QEMU's first register write; without that one
-feature the same host runs."""
+accepts the CPU model, or runs the guest's kernel. Under a hypervisor that refuses
+IA32_ARCH_CAPABILITIES (MSR 0x10a) to its guests, `-cpu host` and `-cpu max` abort in QEMU's
+first register write; without that one feature the same host runs. Some KVMs run the firmware
+but not a stock kernel (under a kvm-pvm host Debian's kernel prints nothing with any CPU
+model): with the guest's kernel given, a candidate must also get it to print."""
 
 import collections
 import json
@@ -154,6 +156,18 @@ class Choice:
             for c, reason in self.passed_over]
 
 
+def qemu_version(qemu="qemu-system-x86_64"):
+    """QEMU's first line of --version; QemuMissing when there is no `qemu` to run."""
+    try:
+        result = subprocess.run([qemu, "--version"], stdout=subprocess.PIPE,
+                                stderr=subprocess.STDOUT, text=True, timeout=30)
+    except FileNotFoundError as error:
+        raise QemuMissing(f"cannot run {qemu}: {error}")
+    except (OSError, subprocess.TimeoutExpired) as error:
+        raise VmError(f"{qemu} --version: {error}")
+    return (result.stdout.splitlines() or ["?"])[0]
+
+
 def _exit_text(code):
     if code < 0:
         try:
@@ -163,18 +177,28 @@ def _exit_text(code):
     return f"exited with status {code}"
 
 
+# What the guest's kernel prints first (with console=ttyS0 and loglevel=7).
+KERNEL_SIGN_OF_LIFE = "Linux version"
+
+
 def probe(candidate, qemu="qemu-system-x86_64", cpus=2, memory_mb=1536, timeout_s=5.0,
-          settle_s=1.0):
-    """Starts QEMU with `candidate` and no guest (the firmware runs, nothing more) and says why
-    it is unusable, or None when it is: QMP must answer within `timeout_s`, report the machine
-    running, and QEMU must still run `settle_s` later (KVM refuses a register when the CPUs
-    first start, which may come after QMP is up)."""
+          settle_s=1.0, kernel=None, kernel_timeout_s=30.0):
+    """Starts QEMU with `candidate` and says why it is unusable, or None when it is: QMP must
+    answer within `timeout_s`, report the machine running, and QEMU must still run `settle_s`
+    later (KVM refuses a register when the CPUs first start, which may come after QMP is up).
+    With `kernel` (the guest's), QEMU boots it with no disk and its first line must reach the
+    serial port within `kernel_timeout_s`; without, the firmware runs and nothing more."""
     folder = tempfile.mkdtemp(prefix="gem-qemu-probe-")
     qmp_path = os.path.join(folder, "qmp.sock")
     log_path = os.path.join(folder, "qemu.log")
+    serial_path = os.path.join(folder, "serial.log")
     command = [qemu] + machine_arguments(candidate, cpus, memory_mb) + [
         "-nodefaults", "-display", "none", "-no-reboot",
         "-qmp", f"unix:{qmp_path},server=on,wait=off"]
+    if kernel:
+        # No root: after its first lines the kernel panics and waits (panic=0), still running.
+        command += ["-kernel", kernel, "-append", "console=ttyS0 loglevel=7 panic=0",
+                    "-serial", f"file:{serial_path}"]
 
     def last_lines():
         try:
@@ -207,6 +231,16 @@ def probe(candidate, qemu="qemu-system-x86_64", cpus=2, memory_mb=1536, timeout_
         time.sleep(settle_s)
         if process.poll() is not None:
             return f"QEMU {_exit_text(process.returncode)} after starting: {last_lines()}"
+        if kernel:
+            deadline = time.monotonic() + kernel_timeout_s
+            while not _contains(serial_path, KERNEL_SIGN_OF_LIFE):
+                if process.poll() is not None:
+                    return (f"QEMU {_exit_text(process.returncode)} before the guest's kernel "
+                            f"printed a line: {last_lines()}")
+                if time.monotonic() > deadline:
+                    return (f"QEMU runs, but the guest's kernel printed nothing in "
+                            f"{kernel_timeout_s:g} s")
+                time.sleep(0.2)
         return None
     finally:
         if qmp is not None:
@@ -225,8 +259,16 @@ def probe(candidate, qemu="qemu-system-x86_64", cpus=2, memory_mb=1536, timeout_
         shutil.rmtree(folder, ignore_errors=True)
 
 
+def _contains(path, text):
+    try:
+        with open(path, errors="replace") as f:
+            return text in f.read()
+    except OSError:
+        return False
+
+
 def choose_accelerator(qemu="qemu-system-x86_64", accelerator="auto", cpus=2, memory_mb=1536,
-                       timeout_s=5.0, settle_s=1.0):
+                       timeout_s=5.0, settle_s=1.0, kernel=None, kernel_timeout_s=30.0):
     """The first of CANDIDATES (those of `accelerator` unless it is "auto") that QEMU runs;
     VmError, naming every candidate and why, when none does; QemuMissing when there is no
     `qemu` to run."""
@@ -234,7 +276,8 @@ def choose_accelerator(qemu="qemu-system-x86_64", accelerator="auto", cpus=2, me
     for candidate in CANDIDATES:
         if accelerator not in ("auto", candidate.accelerator):
             continue
-        reason = probe(candidate, qemu, cpus, memory_mb, timeout_s, settle_s)
+        reason = probe(candidate, qemu, cpus, memory_mb, timeout_s, settle_s, kernel,
+                       kernel_timeout_s)
         if reason is None:
             return Choice(candidate, passed_over)
         passed_over.append((candidate, reason))
@@ -307,6 +350,11 @@ class Machine:
         append = ("root=/dev/vda rw console=ttyS0,115200 quiet loglevel=4 "
                   "systemd.show_status=0 systemd.journald.forward_to_console=1 "
                   "systemd.mask=serial-getty@ttyS0.service")
+        # Under plain emulation a frame takes seconds: the guest raises the kiosk's WatchdogSec
+        # (guest/vm-test-watchdog-generator). Under KVM it runs the shipped unit.
+        self.relaxed_watchdog = choice.accelerator != "kvm"
+        if self.relaxed_watchdog:
+            append += " gemkiosk_vm.watchdog=relaxed"
         command = [
             qemu, *machine_arguments(choice.candidate, cpus, memory_mb),
             "-kernel", os.path.join(image_dir, "vmlinuz"),
