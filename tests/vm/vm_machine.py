@@ -123,8 +123,8 @@ class Qmp:
 Candidate = collections.namedtuple("Candidate", "accelerator cpu")
 
 # In the order tried: the host's own CPU; the same without IA32_ARCH_CAPABILITIES (the MSR some
-# hypervisors refuse to their guests, and QEMU aborts on); a plain 64-bit model any KVM runs;
-# plain emulation.
+# hypervisors refuse to their guests, and QEMU aborts on); a plain 64-bit model, which asks the
+# host for little; plain emulation.
 CANDIDATES = (
     Candidate("kvm", "host"),
     Candidate("kvm", "host,-arch-capabilities"),
