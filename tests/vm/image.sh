@@ -113,9 +113,12 @@ for dir in "$catalogues"/*/; do
 done
 chmod -R a+rX "$root/srv/vm-test" "$root/usr/share/gemkiosk/catalogue"
 
-# The watchdog's limit, for a machine that draws a frame every few seconds.
+# The watchdog's limit for a machine that draws a frame every few seconds, added by a generator
+# only when the kernel's command line asks (under plain emulation; vm_machine.py).
 install -D -m 0644 "$here/guest/gemkiosk-watchdog.conf" \
-  "$root/etc/systemd/system/gemkiosk.service.d/vm-watchdog.conf"
+  "$root/usr/local/share/vm-test/gemkiosk-watchdog.conf"
+install -D -m 0755 "$here/guest/vm-test-watchdog-generator" \
+  "$root/etc/systemd/system-generators/vm-test-watchdog"
 
 # The test's way into the guest.
 install -m 0755 "$here/guest/vm-test-shell.sh" "$root/usr/local/bin/vm-test-shell"
