@@ -6,9 +6,9 @@
 // TIR keeps everything: the same rules as the CPU.
 // Convex stones: one branch at a time, and each exit found by walking the facets from a first
 // guess (trace/facet_walk.hpp, the CPU twin), or with EXIT_UNROLLED by testing every plane,
-// written into the shader as constants (trace_method.cpp measures which is faster). NON_CONVEX: the triangles, brute force (a heart
-// has a few hundred), and exit rays that may re-enter through the cleft wait on a small fixed
-// stack as on the CPU.
+// written into the shader as constants (trace_method.cpp measures which is faster).
+// NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that may
+// re-enter through the cleft wait on a small fixed stack as on the CPU.
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 out vec4 o_colour;
