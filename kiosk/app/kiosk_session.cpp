@@ -338,7 +338,12 @@ void KioskSession::choose_render_method() {
     if (r.choice.fits) {
         log_info(line);
     } else {
-        log_warning(line + "; no method holds the frame rate, using the fastest refractive one");
+        char why[112];
+        std::snprintf(why, sizeof why,
+                      "; no method holds the frame rate, using the first refracting one within "
+                      "%.2fx of the fastest",
+                      kNearFastest);
+        log_warning(line + why);
     }
 }
 

@@ -53,18 +53,25 @@ MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_
             return choice;
         }
     }
-    // The fastest in [begin, end), strict so that the earlier, more accurate one keeps a tie.
-    auto fastest_in = [&](std::size_t begin, std::size_t end) {
-        std::optional<std::size_t> best;
+    // The fastest in [begin, end), strict so that the earlier, more accurate one keeps a tie;
+    // then the first in [begin, end) within kNearFastest of it.
+    auto stand_in = [&](std::size_t begin, std::size_t end) {
+        std::optional<std::size_t> fastest;
         for (std::size_t i = begin; i < end; ++i) {
             const auto& s = choice.statistic_ms[i];
-            if (s && (!best || *s < *choice.statistic_ms[*best])) best = i;
+            if (s && (!fastest || *s < *choice.statistic_ms[*fastest])) fastest = i;
         }
-        return best;
+        if (!fastest) return fastest;
+        const double near = kNearFastest * *choice.statistic_ms[*fastest];
+        for (std::size_t i = begin; i < end; ++i) {
+            const auto& s = choice.statistic_ms[i];
+            if (s && *s <= near) return std::optional<std::size_t>(i);
+        }
+        return fastest;
     };
     const std::size_t split = std::min(fallbacks, n);
-    std::optional<std::size_t> pick = fastest_in(0, split);
-    if (!pick) pick = fastest_in(split, n);
+    std::optional<std::size_t> pick = stand_in(0, split);
+    if (!pick) pick = stand_in(split, n);
     if (pick) {
         choice.index = *pick;
         choice.valid = true;

@@ -49,12 +49,15 @@ struct MethodChoice {
 
 // budget_ms = headroom / target rate: the share of a frame period the stone may take (the rest
 // goes to compositing, the cross-fade and presenting). The FIRST candidate whose statistic is
-// within the budget wins; if none is, the one with the smallest statistic among the first
-// `fallbacks` candidates (the earlier one on a tie): the ladder passes its refractive rungs, so
-// a machine too slow for every method still shows a refracting stone, not phong's flat one,
-// which is chosen only when it alone holds the rate. A candidate without a usable measurement
-// is never chosen; when none of the fallbacks has one, the fastest of the rest is; when no
-// candidate has one the choice is invalid and index points at the last, cheapest candidate.
+// within the budget wins. If none is, a stand-in among the first `fallbacks` candidates (the
+// ladder passes its refractive rungs, so a machine too slow for every method still shows a
+// refracting stone, not phong's flat one, which is chosen only when it alone holds the rate):
+// the first of them within kNearFastest of the fastest of them. Missing the rate either way, a
+// frame a few per cent longer is not seen, a coarser or approximate picture is. A candidate
+// without a usable measurement is never chosen; when none of the fallbacks has one, the
+// fastest of the rest is; when no candidate has one the choice is invalid and index points at
+// the last, cheapest candidate.
+inline constexpr double kNearFastest = 1.25;
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
                            double budget_ms, std::size_t fallbacks = SIZE_MAX);
 // The candidates that may stand in when none holds the rate: every rung but phong.

@@ -70,6 +70,17 @@ TEST(MethodProbe, NoneFitsTakesTheFastestAndSaysSo) {
     EXPECT_EQ(c.index, 1u);
 }
 
+TEST(MethodProbe, NoneFitsPrefersTheMoreAccurateWhenItIsNearlyAsFast) {
+    // Fastest 100 ms; 1.25 × 100 = 125: the first within it is the 120 ms one, not the fastest.
+    EXPECT_EQ(choose_method({{200}, {120}, {110}, {100}}, 13.3).index, 1u);
+    // Exactly on the bound counts as near; just over it does not.
+    EXPECT_EQ(choose_method({{125}, {100}}, 13.3).index, 0u);
+    EXPECT_EQ(choose_method({{126}, {100}}, 13.3).index, 1u);
+    // As measured at 1080p on the build machine: trace 57.3 is within 1.25 × 51.8 of table
+    // one level down, so the exact picture stands in; phong (32.3) is no fallback.
+    EXPECT_EQ(choose_method({{75.1}, {57.3}, {76.0}, {71.2}, {51.8}, {32.3}}, 13.3, 5).index, 1u);
+}
+
 TEST(MethodProbe, NoneFitsNeverFallsBackToTheFlatBaseline) {
     // Phong (last, 80 ms) is the fastest but not among the 2 fallbacks: the faster of those.
     const MethodChoice c = choose_method({{300}, {150}, {80}}, 13.3, 2);
