@@ -1,5 +1,6 @@
 #include "gpu/stone_geometry.hpp"
 
+#include <optional>
 #include <vector>
 
 #include "geometry/facet_adjacency.hpp"
@@ -69,7 +70,12 @@ Result<StoneGeometry> StoneGeometry::upload(const Stone& stone) {
     glEnableVertexAttribArray(1);
     glBindVertexArray(0);
 
-    const FacetAdjacency adjacency = facet_adjacency(stone);
+    // A convex stone's walk holds the adjacency and the first-guess map; a non-convex one needs
+    // only the adjacency.
+    std::optional<FacetWalk> walk;
+    if (stone.convex) walk.emplace(stone);
+    const FacetAdjacency own = walk ? FacetAdjacency{} : facet_adjacency(stone);
+    const FacetAdjacency& adjacency = walk ? walk->adjacency() : own;
     StoneBlock block{};
     std::uint32_t slot = 0;
     for (std::size_t f = 0; f < stone.facets.size(); ++f) {
@@ -94,8 +100,7 @@ Result<StoneGeometry> StoneGeometry::upload(const Stone& stone) {
     glBufferData(GL_UNIFORM_BUFFER, sizeof(StoneBlock), &block, GL_STATIC_DRAW);
     glBindBuffer(GL_UNIFORM_BUFFER, 0);
 
-    if (stone.convex) {
-        const FacetWalk walk(stone);
+    if (walk) {
         const int side = FacetWalk::kGuessSide;
         g.exit_guess_ = make_texture();
         glBindTexture(GL_TEXTURE_CUBE_MAP, g.exit_guess_.get());
@@ -103,7 +108,7 @@ Result<StoneGeometry> StoneGeometry::upload(const Stone& stone) {
         for (int face = 0; face < 6; ++face) {
             glTexImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, GL_R16UI, side, side, 0,
                          GL_RED_INTEGER, GL_UNSIGNED_SHORT,
-                         walk.guess_map().data() + static_cast<std::size_t>(face) * side * side);
+                         walk->guess_map().data() + static_cast<std::size_t>(face) * side * side);
         }
         glPixelStorei(GL_UNPACK_ALIGNMENT, 4);
         glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
