@@ -10,11 +10,11 @@
 namespace gem {
 
 struct GpuRenderOptions {
-    std::string method;    // table, trace, phong
-    std::string database;  // table: the .gemdb file
-    bool blend = false;    // table: blend the two nearest stored views
+    std::string method;         // table, trace, phong
+    std::string database;       // table: the .gemdb file
+    bool blend = false;         // table: blend the two nearest stored views
     std::string fire = "none";  // trace: dispersion "none", "first" (first order) or "exact"
-    std::string ring;      // "", "parametric" or an OBJ file
+    std::string ring;           // "", "parametric" or an OBJ file
     std::string metal = "yellow_gold";
     int frames = 1;          // > 1: a turntable sequence
     double turn_deg = 0.0;   // azimuth step per frame; 0: 360 / frames

@@ -7,34 +7,6 @@
 
 namespace gem::gpu {
 
-glm::dvec3 cube_face_direction(int face, double s, double t) {
-    // OpenGL ES 3.0.6 §3.8.10, table 3.21: (sc, tc, ma) per major axis; s = (sc/|ma| + 1)/2.
-    const double sc = 2.0 * s - 1.0;
-    const double tc = 2.0 * t - 1.0;
-    glm::dvec3 d(0.0);
-    switch (face) {
-        case 0:
-            d = {1.0, -tc, -sc};
-            break;
-        case 1:
-            d = {-1.0, -tc, sc};
-            break;
-        case 2:
-            d = {sc, 1.0, tc};
-            break;
-        case 3:
-            d = {sc, -1.0, -tc};
-            break;
-        case 4:
-            d = {sc, -tc, 1.0};
-            break;
-        default:
-            d = {-sc, -tc, -1.0};
-            break;
-    }
-    return glm::normalize(d);
-}
-
 CubeFaceBasis cube_face_basis(int face) {
     // s grows along `right` and t along `up`: a face rendered with this basis into a GL
     // framebuffer (row 0 at the bottom) reads back with rows in the face's memory order.

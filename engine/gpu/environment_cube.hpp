@@ -11,6 +11,7 @@
 
 #include "gpu/gl_handles.hpp"
 #include "render/environment.hpp"
+#include "util/cube_faces.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
@@ -37,8 +38,8 @@ class EnvironmentCube {
 bool renders_half_float();
 
 // The stone-frame direction through texel coordinates (s, t) in [0, 1]² of cube face `face`
-// (0..5 = +x, -x, +y, -y, +z, -z); t = 0 is the face's first row in memory.
-glm::dvec3 cube_face_direction(int face, double s, double t);
+// (util/cube_faces.hpp).
+using gem::cube_face_direction;
 // The camera basis that renders a face: looks along `forward`, image right and up, such that
 // pixel (s, t) of the rendered face is cube_face_direction(face, s, t) (t = 0 at the bottom
 // row of a GL framebuffer).

@@ -5,61 +5,9 @@
 #include <cmath>
 #include <limits>
 
+#include "util/cube_faces.hpp"
+
 namespace gem {
-
-glm::dvec3 cube_texel_direction(int face, int s, int t, int side) {
-    const double sc = 2.0 * (s + 0.5) / side - 1.0;
-    const double tc = 2.0 * (t + 0.5) / side - 1.0;
-    // OpenGL ES 3.0.6 table 3.21 solved for the direction.
-    glm::dvec3 d;
-    switch (face) {
-        case 0:
-            d = {1.0, -tc, -sc};
-            break;
-        case 1:
-            d = {-1.0, -tc, sc};
-            break;
-        case 2:
-            d = {sc, 1.0, tc};
-            break;
-        case 3:
-            d = {sc, -1.0, -tc};
-            break;
-        case 4:
-            d = {sc, -tc, 1.0};
-            break;
-        default:
-            d = {-sc, -tc, -1.0};
-            break;
-    }
-    return glm::normalize(d);
-}
-
-void cube_texel_of(const glm::dvec3& r, int side, int& face, int& s, int& t) {
-    const glm::dvec3 a = glm::abs(r);
-    double sc, tc, ma;
-    if (a.x >= a.y && a.x >= a.z) {
-        face = r.x >= 0.0 ? 0 : 1;
-        sc = r.x >= 0.0 ? -r.z : r.z;
-        tc = -r.y;
-        ma = a.x;
-    } else if (a.y >= a.z) {
-        face = r.y >= 0.0 ? 2 : 3;
-        sc = r.x;
-        tc = r.y >= 0.0 ? r.z : -r.z;
-        ma = a.y;
-    } else {
-        face = r.z >= 0.0 ? 4 : 5;
-        sc = r.z >= 0.0 ? r.x : -r.x;
-        tc = -r.y;
-        ma = a.z;
-    }
-    auto texel = [side](double c) {
-        return std::clamp(static_cast<int>(std::floor(0.5 * (c + 1.0) * side)), 0, side - 1);
-    };
-    s = texel(sc / ma);
-    t = texel(tc / ma);
-}
 
 FacetWalk::FacetWalk(const Stone& stone)
     : adjacency_(facet_adjacency(stone)), full_search_(make_convex_intersector(stone)) {
@@ -78,8 +26,8 @@ FacetWalk::FacetWalk(const Stone& stone)
         for (int t = 0; t < side; ++t) {
             for (int s = 0; s < side; ++s) {
                 SurfaceHit hit;
-                const bool found = full_search_->next_exit(
-                    centre, cube_texel_direction(face, s, t, side), kNoFacet, hit);
+                const glm::dvec3 d = cube_face_direction(face, (s + 0.5) / side, (t + 0.5) / side);
+                const bool found = full_search_->next_exit(centre, d, kNoFacet, hit);
                 guess_map_[static_cast<std::size_t>((face * side + t) * side + s)] =
                     static_cast<std::uint16_t>(found ? hit.facet : 0);
             }
@@ -88,9 +36,8 @@ FacetWalk::FacetWalk(const Stone& stone)
 }
 
 std::uint32_t FacetWalk::guess(const glm::dvec3& direction) const {
-    int face = 0, s = 0, t = 0;
-    cube_texel_of(direction, kGuessSide, face, s, t);
-    return guess_map_[static_cast<std::size_t>((face * kGuessSide + t) * kGuessSide + s)];
+    const CubeTexel c = cube_face_texel(direction, kGuessSide);
+    return guess_map_[static_cast<std::size_t>((c.face * kGuessSide + c.t) * kGuessSide + c.s)];
 }
 
 // The full search's own t (convex_intersector.cpp): the same expression, so equal values tie

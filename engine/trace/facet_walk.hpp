@@ -52,8 +52,8 @@ class FacetWalk {
                         WalkCost* cost = nullptr) const;
 
     std::uint32_t guess(const glm::dvec3& direction) const;
-    // The guess map, as GL lays out a cube map: faces +x, −x, +y, −y, +z, −z, each
-    // kGuessSide rows of kGuessSide facet indices, row 0 at t = 0 (OpenGL ES 3.0 §3.8.10).
+    // The guess map, as GL lays out a cube map (util/cube_faces.hpp): faces +x, −x, +y, −y,
+    // +z, −z, each kGuessSide rows of kGuessSide facet indices, row 0 at t = 0.
     const std::vector<std::uint16_t>& guess_map() const { return guess_map_; }
     const FacetAdjacency& adjacency() const { return adjacency_; }
 
@@ -66,10 +66,5 @@ class FacetWalk {
     std::vector<std::uint16_t> guess_map_;
     double tie_ = 0.0;
 };
-
-// The unit direction through the centre of texel (s, t) of cube face `face` (GL's order and
-// orientation), and the face and texel a direction falls in: the inverse pair of the GL rule.
-glm::dvec3 cube_texel_direction(int face, int s, int t, int side);
-void cube_texel_of(const glm::dvec3& direction, int side, int& face, int& s, int& t);
 
 }  // namespace gem

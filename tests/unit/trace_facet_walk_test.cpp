@@ -13,6 +13,7 @@
 #include "trace/facet_walk.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"
+#include "util/cube_faces.hpp"
 
 namespace gem {
 namespace {
@@ -193,17 +194,17 @@ TEST(FacetWalk, CubeTexelsRoundTrip) {
     for (int face = 0; face < 6; ++face) {
         for (int t = 0; t < 8; ++t) {
             for (int s = 0; s < 8; ++s) {
-                int f2 = -1, s2 = -1, t2 = -1;
-                cube_texel_of(cube_texel_direction(face, s, t, 8), 8, f2, s2, t2);
-                EXPECT_EQ(f2, face);
-                EXPECT_EQ(s2, s);
-                EXPECT_EQ(t2, t);
+                const CubeTexel c =
+                    cube_face_texel(cube_face_direction(face, (s + 0.5) / 8, (t + 0.5) / 8), 8);
+                EXPECT_EQ(c.face, face);
+                EXPECT_EQ(c.s, s);
+                EXPECT_EQ(c.t, t);
             }
         }
     }
     // Fixed points of the GL rule: +x's centre is (1, 0, 0); its texel s = 0, t = 0 looks
     // toward +z and +y (sc = −rz, tc = −ry).
-    const glm::dvec3 corner = cube_texel_direction(0, 0, 0, 2);
+    const glm::dvec3 corner = cube_face_direction(0, 0.25, 0.25);
     EXPECT_GT(corner.x, 0.0);
     EXPECT_GT(corner.y, 0.0);
     EXPECT_GT(corner.z, 0.0);
