@@ -189,7 +189,7 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
         }
         o = p;
         d = reflect(d, n);
-        dd = dd - 2.0 * dot(dd, n) * n;
+        if (first_order) dd -= 2.0 * dot(dd, n) * n;  // the derivative only where it is used
         weight *= split.x;
         from = exit_facet;
     }
