@@ -13,6 +13,7 @@
 #include "gpu_render.hpp"
 #include "render/image.hpp"
 #include "render/reference_render.hpp"
+#include "render/tone_map.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 
@@ -38,6 +39,8 @@ struct Options {
     std::string out;
     std::string linear;
     std::string method = "reference";
+    std::string tone = "neutral";
+    double exposure_ev = 0.0;
     gem::GpuRenderOptions gpu;
 };
 
@@ -164,7 +167,16 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 100000));
     app.add_option("--turn", o.gpu.turn_deg, "turntable azimuth step per frame, degrees");
     app.add_option("--frames-dir", o.gpu.frames_dir, "write every turntable frame here");
+    app.add_option("--tone", o.tone, "tone curve before the sRGB encoding: neutral or clip")
+        ->check(CLI::IsMember({"neutral", "clip"}));
+    app.add_option("--exposure", o.exposure_ev, "exposure in stops before the tone curve");
+    app.add_option("--msaa", o.gpu.msaa, "GPU: samples per pixel of the rasterised geometry")
+        ->check(CLI::Range(1, 16));
+    app.add_option("--glare", o.gpu.glare, "GPU: share of the picture spread as glare (0: none)")
+        ->check(CLI::Range(0.0, 1.0));
     CLI11_PARSE(app, argc, argv);
+    o.gpu.display.curve = *gem::tone_curve_named(o.tone);
+    o.gpu.display.exposure_ev = o.exposure_ev;
 
     const bool defaults_only = argc == 1;
     if (defaults_only) {
@@ -200,7 +212,8 @@ int main(int argc, char** argv) {
     gem::Result<gem::Image> image =
         gem::render_reference(stone.value(), environment.value(), gem::render_settings(s), &stats);
     if (!image) return fail(image.error());
-    if (auto written = gem::write_png(image.value(), o.out); !written) {
+    if (auto written = gem::write_png(gem::to_display(image.value(), o.gpu.display), o.out);
+        !written) {
         return fail(written.error());
     }
     if (!o.linear.empty()) {

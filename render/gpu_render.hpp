@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "render/tone_map.hpp"
 #include "scene/scene.hpp"
 
 namespace gem {
@@ -16,10 +17,13 @@ struct GpuRenderOptions {
     std::string fire = "none";  // trace: dispersion "none", "first" (first order) or "exact"
     std::string ring;           // "", "parametric" or an OBJ file
     std::string metal = "yellow_gold";
-    int frames = 1;          // > 1: a turntable sequence
-    double turn_deg = 0.0;   // azimuth step per frame; 0: 360 / frames
-    std::string frames_dir;  // where every frame goes as frame-NNNN.png (optional)
-    std::string out;         // the (last) image
+    int frames = 1;            // > 1: a turntable sequence
+    double turn_deg = 0.0;     // azimuth step per frame; 0: 360 / frames
+    std::string frames_dir;    // where every frame goes as frame-NNNN.png (optional)
+    std::string out;           // the (last) image
+    DisplayTransform display;  // exposure and tone curve, as the CPU reference's PNG gets
+    int msaa = 4;              // samples per pixel of the rasterised stone and ring
+    double glare = 0.0;        // glare share (the kiosk's bloom); 0 compares with the CPU
 };
 
 // Returns the process exit status; messages go to stdout/stderr prefixed "gemrender:".

@@ -35,6 +35,11 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm) {
         m[3][2] = dist * (fa + n) / (fa - n) - 2.0 * fa * n / (fa - n);
         m[3][3] = dist;
     }
+    // The framing shift moves the picture: ndc += shift, i.e. clip x, y += shift times w.
+    for (int column = 0; column < 4; ++column) {
+        m[column][0] += camera.shift().x * m[column][3];
+        m[column][1] += camera.shift().y * m[column][3];
+    }
     return glm::mat4(m);
 }
 
@@ -45,6 +50,7 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
     program.set("u_cam_up", glm::vec3(camera.up()));
     program.set("u_cam_half", glm::vec2(0.5 * camera.width() * camera.pixel_size(),
                                         0.5 * camera.height() * camera.pixel_size()));
+    program.set("u_cam_shift", glm::vec2(camera.shift()));
     program.set("u_cam_distance", static_cast<float>(camera.distance()));
     program.set("u_cam_start", static_cast<float>(camera.ray_start()));
     program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));

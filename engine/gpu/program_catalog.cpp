@@ -23,6 +23,11 @@ std::vector<ProgramSpec> all_program_specs() {
         {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}},
+        // The picture from HDR radiance to the display: glare pyramid, tone curve
+        // (hdr_picture.hpp, bloom_pass.hpp).
+        {"bloom_down", {"fullscreen.vert"}, {"bloom_down.frag"}, {}},
+        {"bloom_up", {"fullscreen.vert"}, {"bloom_up.frag"}, {}},
+        {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
         // The kiosk's rotate-and-encode copy to the window surface (kiosk/display/present_pass).
         {"present", {"fullscreen.vert"}, {"present.frag"}, {}},
     };

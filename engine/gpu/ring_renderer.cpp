@@ -184,6 +184,7 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         background_.set("u_cam_right", glm::vec3(basis.right));
         background_.set("u_cam_up", glm::vec3(basis.up));
         background_.set("u_cam_half", glm::vec2(1.0f));
+        background_.set("u_cam_shift", glm::vec2(0.0f));
         background_.set("u_cam_distance", 1.0f);
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_CUBE_MAP, background.texture());

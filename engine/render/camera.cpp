@@ -43,6 +43,7 @@ Result<Camera> Camera::make(const CameraSettings& s, double bounding_radius_mm, 
     cam.up_ = -std::sin(roll) * right0 + std::cos(roll) * up0;
     cam.width_ = width;
     cam.height_ = height;
+    cam.shift_ = s.shift;
     const double shorter = static_cast<double>(std::min(width, height));
     if (s.perspective_distance_mm > 0.0) {
         cam.distance_ = s.perspective_distance_mm;
@@ -57,8 +58,8 @@ Result<Camera> Camera::make(const CameraSettings& s, double bounding_radius_mm, 
 }
 
 Ray Camera::ray(double px, double py) const {
-    const double sx = (px - 0.5 * width_) * pixel_size_;
-    const double sy = (0.5 * height_ - py) * pixel_size_;
+    const double sx = (px - 0.5 * width_ * (1.0 + shift_.x)) * pixel_size_;
+    const double sy = (0.5 * height_ * (1.0 - shift_.y) - py) * pixel_size_;
     Ray r;
     if (distance_ > 0.0) {
         r.origin = -forward_ * distance_;

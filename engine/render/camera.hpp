@@ -20,6 +20,9 @@ struct CameraSettings {
     double roll_deg = 0.0;
     double zoom = 1.0;  // 1: the stone's bounding sphere just fits the shorter image side
     double perspective_distance_mm = 0.0;  // 0: orthographic; else the eye's distance
+    // Where the stone's centre appears, in normalised image coordinates (-1..1 across the
+    // picture, x right, y up): a framing choice that moves the picture, not the view.
+    glm::dvec2 shift{0.0};
 };
 
 class Camera {
@@ -45,6 +48,7 @@ class Camera {
     double pixel_size() const { return pixel_size_; }
     int width() const { return width_; }
     int height() const { return height_; }
+    const glm::dvec2& shift() const { return shift_; }
 
   private:
     glm::dvec3 forward_{0.0, -1.0, 0.0};
@@ -53,6 +57,7 @@ class Camera {
     double distance_ = 0.0;   // eye distance, 0 for orthographic
     double ray_start_ = 0.0;  // orthographic rays start this far back from the centre
     double pixel_size_ = 0.0;
+    glm::dvec2 shift_{0.0};
     int width_ = 0;
     int height_ = 0;
 };

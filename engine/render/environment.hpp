@@ -19,6 +19,8 @@ class Environment {
     // overhead and to the sides. Deterministic.
     static Environment studio();
     static Environment uniform(const glm::dvec3& colour);
+    // A white light tent with dark flags round it (environment_tent.cpp), as an image.
+    static Environment light_tent();
     // PNG (8-bit sRGB, decoded to linear) or Radiance .hdr (linear); +y is the image's top
     // row, the image's centre column looks toward -z. Errors name the file.
     static Result<Environment> load_image(const std::filesystem::path& path);

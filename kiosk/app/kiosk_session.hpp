@@ -12,12 +12,15 @@
 #include "app/crossfade.hpp"
 #include "app/frame_stats.hpp"
 #include "app/kiosk_run.hpp"
+#include "app/method_probe_run.hpp"
+#include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
 #include "app/stone_scene.hpp"
 #include "catalogue/catalogue_watcher.hpp"
 #include "display/display.hpp"
 #include "display/seat.hpp"
 #include "gestures/gesture_controller.hpp"
+#include "gpu/hdr_picture.hpp"
 #include "input/evemu_replay.hpp"
 #include "input/input_manager.hpp"
 #include "service/service_notifier.hpp"
@@ -61,6 +64,9 @@ class KioskSession {
     void rebuild_scene(double now_s);
     // render.method = auto: measures the candidates and sets render_ (method_probe.hpp).
     void choose_render_method();
+    // When no method holds the frame rate with the glare on but one does without it, turns
+    // the glare off (measured: its passes' time at this size) and says so in the log.
+    void drop_glare_if_it_pays(ProbeResult& probe, double budget_ms);
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     double draw_stone(double now_s, FrameRecord& record);
@@ -72,7 +78,8 @@ class KioskSession {
     std::unique_ptr<Display> display_;
     double next_display_try_s_ = 0.0;
     bool display_failure_logged_ = false;
-    std::optional<gpu::RenderTarget> picture_;
+    std::optional<gpu::HdrPicture> scene_picture_;  // radiance, multisampled
+    std::optional<gpu::RenderTarget> picture_;      // what the display shows
     std::optional<CrossFade> crossfade_;
 
     std::unique_ptr<InputManager> input_;

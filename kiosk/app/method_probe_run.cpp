@@ -16,19 +16,18 @@ double seconds_now() {
         .count();
 }
 
-Result<Camera> probe_camera(const ViewState& start, double turn_deg, double radius_mm,
+Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, double turn_deg,
                             const gpu::RenderTarget& target) {
-    CameraSettings settings;
-    settings.azimuth_deg = start.azimuth_deg + turn_deg;
-    settings.elevation_deg = start.elevation_deg;
-    settings.roll_deg = start.roll_deg;
-    settings.zoom = start.zoom;
-    return Camera::make(settings, radius_mm, target.width(), target.height());
+    ViewState view = start;
+    view.azimuth_deg += turn_deg;
+    return scene.camera(view, {target.width(), target.height()});
 }
 
-// Times frames of one scene; stops once more frames missed the budget than p90 allows.
-std::vector<double> measure(StoneScene& scene, gpu::RenderTarget& target, const ViewState& start,
-                            double budget_ms, const ProbeOptions& options) {
+// Times whole frames of one scene, the picture's finishing passes included; stops once more
+// frames missed the budget than p90 allows.
+std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
+                            gpu::RenderTarget& target, const ViewState& start, double budget_ms,
+                            const ProbeOptions& options) {
     gpu::FrameRenderer& renderer = scene.renderer();
     const int total = options.warmup_frames + options.frames;
     const int allowed_misses =
@@ -39,10 +38,9 @@ std::vector<double> measure(StoneScene& scene, gpu::RenderTarget& target, const 
     glm::dvec3 last_forward(0.0);
     const double frame_s = std::isfinite(budget_ms) ? budget_ms / 1000.0 : 1.0 / 60.0;
     for (int i = 0; i < total; ++i) {
-        auto camera =
-            probe_camera(start, options.turn_deg_per_frame * i, renderer.scene_radius_mm(), target);
+        auto camera = probe_camera(scene, start, options.turn_deg_per_frame * i, target);
         if (!camera) break;
-        target.bind();
+        scene_picture.bind();
         glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const auto begin = std::chrono::steady_clock::now();
@@ -57,14 +55,16 @@ std::vector<double> measure(StoneScene& scene, gpu::RenderTarget& target, const 
                                     table->level_for(table->database().camera().field_mm /
                                                      camera.value().pixel_size()));
         }
-        auto stats = renderer.render(camera.value(), true);
+        auto stats = renderer.render(camera.value(), false);
+        const bool finished = stats && scene_picture.finish(target);
+        glFinish();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
                 .count();
         if (i < options.warmup_frames) continue;
         // A failed frame is recorded as not-a-number: choose_method drops it.
-        times.push_back(stats ? ms : std::nan(""));
-        if (stats && ms > budget_ms && ++misses > allowed_misses) break;
+        times.push_back(finished ? ms : std::nan(""));
+        if (finished && ms > budget_ms && ++misses > allowed_misses) break;
     }
     return times;
 }
@@ -80,9 +80,9 @@ RenderChoice apply_candidate(RenderChoice base, const MethodCandidate& candidate
 }
 
 Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice& look,
-                                  const RenderChoice& base, gpu::RenderTarget& target,
-                                  const ViewState& start, double budget_ms,
-                                  const ProbeOptions& options) {
+                                  const RenderChoice& base, gpu::HdrPicture& scene_picture,
+                                  gpu::RenderTarget& target, const ViewState& start,
+                                  double budget_ms, const ProbeOptions& options) {
     const double began_s = seconds_now();
     ProbeResult result;
     // The first rung's scene holds the database, which decides how many rungs there are: the
@@ -92,7 +92,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
     if (!first) return Error{first.error()};
     int needed_level = 0;
     const Database& db = first.value()->database();
-    auto camera = probe_camera(start, 0.0, first.value()->renderer().scene_radius_mm(), target);
+    auto camera = probe_camera(*first.value(), start, 0.0, target);
     if (camera) {
         needed_level = static_cast<int>(
             gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
@@ -109,7 +109,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
             if (!made) continue;  // never measured, never chosen
             scene = std::move(made).value();
         }
-        result.frame_ms[i] = measure(*scene, target, start, budget_ms, options);
+        result.frame_ms[i] = measure(*scene, scene_picture, target, start, budget_ms, options);
         result.choice =
             choose_method(result.frame_ms, budget_ms, refractive_rungs(result.candidates));
         if (result.choice.fits) break;

@@ -1,15 +1,16 @@
 #pragma once
 // The measuring half of render.method = "auto" (method_probe.hpp holds the choice): for the
 // stone about to be shown, each candidate's scene is built and a few frames are drawn into the
-// kiosk's own off-screen picture at the display's size, along a small turn from the start view
-// so the table method streams and uploads views as it does in use. Each frame is timed to the
-// end of the GPU's work.
+// kiosk's own off-screen pictures at the display's size (finishing passes included), along a small
+// turn from the start view so the table method streams and uploads views as it does in use. Each
+// frame is timed to the end of the GPU's work.
 
 #include <vector>
 
 #include "app/method_probe.hpp"
 #include "app/stone_scene.hpp"
 #include "gestures/gesture_output.hpp"
+#include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "util/result.hpp"
 
@@ -34,9 +35,9 @@ struct ProbeResult {
 // frames drawn. The walk stops at the first candidate that fits.
 // Errors: the first scene (table blend) cannot be made. Leaves `target` bound.
 Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice& look,
-                                  const RenderChoice& base, gpu::RenderTarget& target,
-                                  const ViewState& start, double budget_ms,
-                                  const ProbeOptions& options = {});
+                                  const RenderChoice& base, gpu::HdrPicture& scene_picture,
+                                  gpu::RenderTarget& target, const ViewState& start,
+                                  double budget_ms, const ProbeOptions& options = {});
 
 // The render choice for a candidate, the rest taken from `base`.
 RenderChoice apply_candidate(RenderChoice base, const MethodCandidate& candidate);

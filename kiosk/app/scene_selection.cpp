@@ -58,14 +58,19 @@ LookChoice SceneSelection::look() const {
         case BackgroundPreset::Kind::image:
             look.background = LookChoice::Background::image;
             break;
+        case BackgroundPreset::Kind::tent:
+            look.background = LookChoice::Background::tent;
+            break;
     }
     look.colour = b.colour;
     look.image = b.file;
     look.background_intensity = b.intensity;
+    look.exposure_ev = l.exposure_ev;
     // One environment serves as the background and as what the stone refracts, except behind a
     // flat colour: there the preset's intensity is the colour's alone.
-    look.environment_intensity =
-        l.environment_intensity * (b.kind == BackgroundPreset::Kind::colour ? 1.0 : b.intensity);
+    const bool flat_behind =
+        b.kind == BackgroundPreset::Kind::colour || b.kind == BackgroundPreset::Kind::tent;
+    look.environment_intensity = l.environment_intensity * (flat_behind ? 1.0 : b.intensity);
     for (const PresetLight& p : l.lights) {
         look.lights.push_back(Light{p.position, p.directional, p.colour});
     }

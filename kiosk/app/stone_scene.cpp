@@ -2,6 +2,7 @@
 
 #include <numbers>
 
+#include "app/start_view.hpp"
 #include "scene/scene.hpp"
 #include "tables/reader.hpp"
 
@@ -21,6 +22,9 @@ Result<Environment> make_environment(const LookChoice& look) {
             environment = std::move(loaded).value();
             break;
         }
+        case LookChoice::Background::tent:
+            environment = Environment::light_tent();
+            break;
         case LookChoice::Background::studio:
         case LookChoice::Background::colour:
             break;
@@ -86,7 +90,8 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     setup.table.wait_for_views = render.wait_for_views;
     setup.environment = &scene->environment_;
     setup.cube_face = render.cube_face;
-    if (look.background == LookChoice::Background::colour) {
+    if (look.background == LookChoice::Background::colour ||
+        look.background == LookChoice::Background::tent) {
         setup.background_colour = glm::vec3(look.colour * look.background_intensity);
     }
     if (stone.ring != RingKind::none) {
@@ -98,7 +103,23 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     auto renderer = gpu::FrameRenderer::make(std::move(setup));
     if (!renderer) return fail(renderer.error());
     scene->renderer_.emplace(std::move(renderer).value());
+    scene->stone_share_ = render.stone_share;
     return scene;
+}
+
+const Framing& StoneScene::framing(glm::ivec2 size) const {
+    if (size == framed_size_) return framing_;
+    const std::vector<glm::dvec3>& stone = database_->stone().vertices;
+    std::vector<glm::dvec3> ring(ring_.positions.begin(), ring_.positions.end());
+    framing_ =
+        frame_ring(stone, ring, kStartView, size, renderer_->scene_radius_mm(), stone_share_);
+    framed_size_ = size;
+    return framing_;
+}
+
+Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size) const {
+    return Camera::make(framed_camera(view, framing(size)), renderer_->scene_radius_mm(), size.x,
+                        size.y);
 }
 
 }  // namespace gem::kiosk

@@ -13,6 +13,7 @@
 
 #include <glm/glm.hpp>
 
+#include "app/framing.hpp"
 #include "catalogue/catalogue.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/ring_mesh.hpp"
@@ -24,13 +25,14 @@ namespace gem::kiosk {
 
 struct LookChoice {
     // Background: the studio, a uniform surround, an equirectangular image, or a flat colour
-    // behind a studio-lit stone.
-    enum class Background { studio, uniform, image, colour } background = Background::studio;
+    // behind a studio-lit stone, or a flat colour behind a stone in a light tent.
+    enum class Background { studio, uniform, image, colour, tent } background = Background::studio;
     glm::dvec3 colour{0.05};
     std::filesystem::path image;
     double background_intensity = 1.0;
     std::vector<Light> lights;
     double environment_intensity = 1.0;
+    double exposure_ev = 0.0;  // the lighting preset's exposure (added to [picture]'s)
 };
 
 struct RenderChoice {
@@ -44,6 +46,7 @@ struct RenderChoice {
     int max_level = -1;  // table: highest ray-table level shown; -1: none
     std::size_t cache_bytes = std::size_t{256} << 20;
     bool wait_for_views = false;  // a single still (tests, snapshots) waits for exact views
+    double stone_share = 0.25;    // the start view's framing rule (framing.hpp)
 };
 
 class StoneScene {
@@ -56,6 +59,12 @@ class StoneScene {
     gpu::FrameRenderer& renderer() { return renderer_.value(); }
     const Database& database() const { return *database_; }
     const std::string& name() const { return name_; }
+    // The camera for `view` in a picture of `size`, framed as framing.hpp says at the start
+    // view (start_view.hpp); view.zoom scales that framing.
+    Result<Camera> camera(const ViewState& view, glm::ivec2 size) const;
+    // The framing for a picture of `size` (computed once per size).
+    const Framing& framing(glm::ivec2 size) const;
+
     // The band of elevations the stone's database holds (the gestures keep the view inside).
     double min_elevation_deg() const { return min_elevation_deg_; }
     double max_elevation_deg() const { return max_elevation_deg_; }
@@ -69,6 +78,9 @@ class StoneScene {
     std::optional<gpu::FrameRenderer> renderer_;
     double min_elevation_deg_ = -90.0;
     double max_elevation_deg_ = 90.0;
+    double stone_share_ = 0.25;
+    mutable glm::ivec2 framed_size_{0};
+    mutable Framing framing_;
 };
 
 }  // namespace gem::kiosk

@@ -39,6 +39,18 @@ struct RenderConfig {
     double auto_headroom = 0.8;
 };
 
+// [picture]: from the scene's radiance to the display (engine/gpu/hdr_picture.hpp).
+enum class PictureTone { neutral, clip };
+struct PictureConfig {
+    int msaa = 4;                             // samples per pixel of the stone's and ring's edges
+    double glare = 0.04;                      // share of the picture spread as glare; 0: none
+    PictureTone tone = PictureTone::neutral;  // Khronos PBR Neutral, or a plain clip
+    double exposure_ev = 0.0;                 // stops, added to each lighting preset's own
+    // Start view: the girdle's width as a share of the picture's height, as far as the whole
+    // ring still fits (app/framing.hpp).
+    double stone_share = 0.25;
+};
+
 // [catalogue]: where catalogues live and arrive (the main program hands these to the catalogue
 // module's own CatalogueOptions, catalogue/catalogue.hpp).
 struct CatalogueConfig {
@@ -62,6 +74,7 @@ struct KioskConfig {
     InputOptions input;
     GestureOptions gestures;  // [gestures] and [attract]
     RenderConfig render;
+    PictureConfig picture;
     CatalogueConfig catalogue;
     SnapshotConfig snapshot;
     std::vector<BackgroundPreset> backgrounds = default_backgrounds();

@@ -190,6 +190,23 @@ constexpr KeySpec<RenderConfig> kRenderKeys[] = {
                          RenderConfig& o) { r.number(n, k, 0.1, 1.0, o.auto_headroom); }},
 };
 
+constexpr KeySpec<PictureConfig> kPictureKeys[] = {
+    {"msaa", [](ConfigReader& r, const Node& n, Key k,
+                PictureConfig& o) { r.integer(n, k, 1, 16, o.msaa); }},
+    {"glare", [](ConfigReader& r, const Node& n, Key k,
+                 PictureConfig& o) { r.number(n, k, 0.0, 1.0, o.glare); }},
+    {"tone",
+     [](ConfigReader& r, const Node& n, Key k, PictureConfig& o) {
+         std::size_t i = 0;
+         if (!r.choice(n, k, {"neutral", "clip"}, i)) return;
+         o.tone = i == 0 ? PictureTone::neutral : PictureTone::clip;
+     }},
+    {"exposure_ev", [](ConfigReader& r, const Node& n, Key k,
+                       PictureConfig& o) { r.number(n, k, -16.0, 16.0, o.exposure_ev); }},
+    {"stone_share", [](ConfigReader& r, const Node& n, Key k,
+                       PictureConfig& o) { r.number(n, k, 0.05, 0.8, o.stone_share); }},
+};
+
 constexpr KeySpec<CatalogueConfig> kCatalogueKeys[] = {
     {"default_dir", [](ConfigReader& r, const Node& n, Key k,
                        CatalogueConfig& o) { r.path(n, k, o.default_dir); }},
@@ -251,6 +268,11 @@ constexpr SectionSpec kSections[] = {
          read_table<RenderConfig>(r, n, "render", kRenderKeys, c.render);
      },
      [](std::vector<std::string>& keys) { append_keys(keys, "render", kRenderKeys); }},
+    {"picture",
+     [](ConfigReader& r, const Node& n, KioskConfig& c) {
+         read_table<PictureConfig>(r, n, "picture", kPictureKeys, c.picture);
+     },
+     [](std::vector<std::string>& keys) { append_keys(keys, "picture", kPictureKeys); }},
     {"catalogue",
      [](ConfigReader& r, const Node& n, KioskConfig& c) {
          read_table<CatalogueConfig>(r, n, "catalogue", kCatalogueKeys, c.catalogue);

@@ -46,10 +46,11 @@ constexpr KeySpec<BackgroundDraft> kBackgroundKeys[] = {
     {"kind",
      [](ConfigReader& r, const Node& n, Key k, BackgroundDraft& d) {
          std::size_t i = 0;
-         if (!r.choice(n, k, {"studio", "uniform", "colour", "image"}, i)) return;
+         if (!r.choice(n, k, {"studio", "uniform", "colour", "image", "tent"}, i)) return;
          constexpr BackgroundPreset::Kind kinds[] = {
              BackgroundPreset::Kind::studio, BackgroundPreset::Kind::uniform,
-             BackgroundPreset::Kind::colour, BackgroundPreset::Kind::image};
+             BackgroundPreset::Kind::colour, BackgroundPreset::Kind::image,
+             BackgroundPreset::Kind::tent};
          d.preset.kind = kinds[i];
      }},
     {"colour",
@@ -107,15 +108,16 @@ void finish_background(ConfigReader& r, const Node& table, BackgroundDraft& d, s
         r.error(*d.file, "background.file", "only kind \"image\" uses a file");
         p.file.clear();
     }
-    const bool coloured = p.kind == Kind::uniform || p.kind == Kind::colour;
+    const bool coloured = p.kind == Kind::uniform || p.kind == Kind::colour || p.kind == Kind::tent;
     if (!coloured && d.colour != nullptr) {
         r.error(*d.colour, "background.colour",
-                "only kinds \"uniform\" and \"colour\" use a colour");
+                "only kinds \"uniform\", \"colour\" and \"tent\" use a colour");
     }
-    // Without a colour, a uniform surround is white (as a scene's [environment] is) and a flat
-    // background is the near-black of BackgroundPreset's default.
+    // Without a colour, a uniform surround and a tent's backdrop are white (as a scene's
+    // [environment] is) and a flat background is the near-black of BackgroundPreset's default.
     if (d.colour == nullptr || !coloured) {
-        p.colour = p.kind == Kind::uniform ? glm::dvec3(1.0) : BackgroundPreset{}.colour;
+        p.colour = p.kind == Kind::uniform || p.kind == Kind::tent ? glm::dvec3(1.0)
+                                                                   : BackgroundPreset{}.colour;
     }
 }
 
@@ -200,6 +202,8 @@ constexpr KeySpec<LightingDraft> kLightingKeys[] = {
      [](ConfigReader& r, const Node& n, Key k, LightingDraft& d) {
          r.number(n, k, 0.0, 1000.0, d.preset.environment_intensity);
      }},
+    {"exposure_ev", [](ConfigReader& r, const Node& n, Key k,
+                       LightingDraft& d) { r.number(n, k, -16.0, 16.0, d.preset.exposure_ev); }},
     {"light", read_lights},
 };
 

@@ -14,8 +14,10 @@ namespace gem::kiosk {
 struct BackgroundPreset {
     // studio: the procedural studio (dark counter, softboxes) all round; uniform: a surround
     // of one radiance `colour`; colour: a flat `colour` behind a studio-lit stone; image: an
-    // equirectangular PNG (8-bit sRGB) or Radiance .hdr (linear) environment from `file`.
-    enum class Kind { studio, uniform, colour, image };
+    // equirectangular PNG (8-bit sRGB) or Radiance .hdr (linear) environment from `file`;
+    // tent: a flat `colour` behind a stone in a white light tent with dark flags (product
+    // photography's white look).
+    enum class Kind { studio, uniform, colour, image, tent };
 
     std::string name;
     Kind kind = Kind::studio;
@@ -39,6 +41,7 @@ inline constexpr std::size_t kMaxPresetLights = 4;
 struct LightingPreset {
     std::string name;
     double environment_intensity = 1.0;  // scales the environment the stone refracts
+    double exposure_ev = 0.0;            // the picture's exposure under this lighting, stops
     std::vector<PresetLight> lights;     // at most kMaxPresetLights; none: environment only
 };
 

@@ -118,5 +118,22 @@ TEST(RenderCamera, RejectsBadSettings) {
     EXPECT_FALSE(Camera::make({}, 1.0, 0, 8).ok());
 }
 
+TEST(RenderCamera, AShiftMovesTheStonesCentreToItsPlaceInThePicture) {
+    // 64 × 32, shift (0.5, -0.25): the centre is seen at pixel (32 + 16, 16 + 4) for both
+    // kinds of camera (y down in pixels, up in ndc).
+    for (double distance : {0.0, 40.0}) {
+        CameraSettings s;
+        s.elevation_deg = 35.0;
+        s.perspective_distance_mm = distance;
+        s.shift = {0.5, -0.25};
+        const Camera c = make_camera(s, 5.0, 64, 32);
+        EXPECT_LT(distance_to_ray_line(c.ray(48.0, 20.0), glm::dvec3(0.0)), 1e-12) << distance;
+        EXPECT_GT(distance_to_ray_line(c.ray(32.0, 16.0), glm::dvec3(0.0)), 0.5) << distance;
+        // The pixel size is the shift's alone to keep: a shift is not a zoom.
+        s.shift = {0.0, 0.0};
+        EXPECT_EQ(make_camera(s, 5.0, 64, 32).pixel_size(), c.pixel_size());
+    }
+}
+
 }  // namespace
 }  // namespace gem

@@ -5,10 +5,13 @@ uniform vec3 u_cam_up;
 uniform vec2 u_cam_half;       // half the image's extent: mm (orthographic) or tangent units
 uniform float u_cam_distance;  // eye distance (perspective); 0: orthographic
 uniform float u_cam_start;     // orthographic rays start this far behind the centre
+uniform vec2 u_cam_shift;      // where the stone's centre appears, ndc (Camera::shift)
 
-// ndc: -1..1 across the viewport, y up.
+// The image-plane position of ndc (-1..1 across the viewport, y up), in u_cam_half's units.
+vec2 image_plane(vec2 ndc) { return (ndc - u_cam_shift) * u_cam_half; }
+
 void camera_ray(vec2 ndc, out vec3 origin, out vec3 direction) {
-    vec2 s = ndc * u_cam_half;
+    vec2 s = image_plane(ndc);
     if (u_cam_distance > 0.0) {
         origin = -u_cam_forward * u_cam_distance;
         direction = normalize(u_cam_forward + s.x * u_cam_right + s.y * u_cam_up);

@@ -69,7 +69,7 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
 }
 
 void main() {
-    vec2 p = fragment_ndc(gl_FragCoord) * u_cam_half * u_image_scale;
+    vec2 p = image_plane(fragment_ndc(gl_FragCoord)) * u_image_scale;
     vec3 c0 = vec3(0.0);
     vec3 c1 = vec3(0.0);
     bool hit0 = shade_view(p, u_pixels0, u_rays_a0, u_rays_b0, u_rays_c0, u_image_map0,

@@ -9,10 +9,12 @@
 #include <memory>
 #include <sstream>
 
+#include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
 #include "app/stone_scene.hpp"
 #include "catalogue/validate.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "kiosk_process.hpp"
 #include "render/camera.hpp"
@@ -180,22 +182,26 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     render.cube_face = config.config.render.cube_face;
     render.depth = config.config.render.depth;
     render.wait_for_views = true;
+    render.stone_share = config.config.picture.stone_share;
     auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render);
     if (!scene) return Error{scene.error()};
     gpu::FrameRenderer& renderer = scene.value()->renderer();
-    CameraSettings settings{.azimuth_deg = view.azimuth_deg,
-                            .elevation_deg = view.elevation_deg,
-                            .roll_deg = view.roll_deg,
-                            .zoom = view.zoom};
-    auto camera = Camera::make(settings, renderer.scene_radius_mm(), kWidth, kHeight);
+    auto camera = scene.value()->camera(view, {kWidth, kHeight});
     if (!camera) return Error{camera.error()};
     auto target = gpu::RenderTarget::make(kWidth, kHeight);
     if (!target) return Error{target.error()};
-    target.value().bind();
+    // The picture's finishing passes, as the kiosk's config sets them.
+    gpu::PictureOptions options = kiosk::picture_options(config.config.picture);
+    options.display = kiosk::display_transform(config.config.picture, selection.look());
+    auto scene_picture = gpu::HdrPicture::make(kWidth, kHeight, options);
+    if (!scene_picture) return Error{scene_picture.error()};
+    scene_picture.value().bind();
     glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
     auto drawn = renderer.render(camera.value(), true);
     if (!drawn) return Error{drawn.error()};
+    auto finished = scene_picture.value().finish(target.value());
+    if (!finished) return Error{finished.error()};
     return target.value().read();
 }
 

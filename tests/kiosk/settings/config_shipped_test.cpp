@@ -96,9 +96,9 @@ TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
     // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
-    // 12, attract 6, render 7, catalogue 5, snapshot 2, background 5, lighting 3,
+    // 12, attract 6, render 7, picture 5, catalogue 5, snapshot 2, background 5, lighting 4,
     // lighting.light 3.
-    EXPECT_EQ(known.size(), 59u);
+    EXPECT_EQ(known.size(), 65u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -172,6 +172,11 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(s.render.view_cache_mb, d.render.view_cache_mb);
     EXPECT_EQ(s.render.frame_rate_hz, d.render.frame_rate_hz);
     EXPECT_EQ(s.render.auto_headroom, d.render.auto_headroom);
+    EXPECT_EQ(s.picture.msaa, d.picture.msaa);
+    EXPECT_EQ(s.picture.glare, d.picture.glare);
+    EXPECT_EQ(s.picture.tone, d.picture.tone);
+    EXPECT_EQ(s.picture.exposure_ev, d.picture.exposure_ev);
+    EXPECT_EQ(s.picture.stone_share, d.picture.stone_share);
 
     EXPECT_EQ(s.catalogue.default_dir, d.catalogue.default_dir);
     EXPECT_EQ(s.catalogue.state_dir, d.catalogue.state_dir);
@@ -195,6 +200,7 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
         const LightingPreset& dl = d.lightings[i];
         EXPECT_EQ(sl.name, dl.name);
         EXPECT_EQ(sl.environment_intensity, dl.environment_intensity) << dl.name;
+        EXPECT_EQ(sl.exposure_ev, dl.exposure_ev) << dl.name;
         ASSERT_EQ(sl.lights.size(), dl.lights.size()) << dl.name;
         for (std::size_t j = 0; j < dl.lights.size(); ++j) {
             EXPECT_EQ(sl.lights[j].position, dl.lights[j].position) << dl.name;

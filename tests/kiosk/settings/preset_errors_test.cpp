@@ -51,9 +51,10 @@ TEST(PresetErrors, BackgroundFaults) {
         at(text, "sky.jpg", 1) + "background.file: expected a PNG (.png) or Radiance (.hdr) image",
         at(text, "sky.png", 1) + "background.file: only kind \"image\" uses a file",
         at(text, "colour = [1, 0, 0]", 1) +
-            "background.colour: only kinds \"uniform\" and \"colour\" use a colour",
+            "background.colour: only kinds \"uniform\", \"colour\" and \"tent\" use a colour",
         at(text, "sunset", 1) +
-            "background.kind: expected one of \"studio\", \"uniform\", \"colour\", \"image\"",
+            "background.kind: expected one of \"studio\", \"uniform\", \"colour\", \"image\", "
+            "\"tent\"",
         at(text, "[1, -1, 0]", 1) + "background.colour: colour components must not be negative",
         at(text, "intensity", 1) + "background.intensity: must be between 0 and 1000",
         at(text, "glow", 1) + "background.glow: unknown key",

@@ -1,0 +1,96 @@
+#include "gpu/bloom_pass.hpp"
+
+#include <algorithm>
+
+#include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
+
+namespace gem::gpu {
+
+namespace {
+
+constexpr int kMaxLevels = 6;  // at 1080p the widest blur spans about a tenth of the height
+constexpr int kMinSide = 8;
+
+}  // namespace
+
+Result<BloomPass> BloomPass::make(int width, int height) {
+    auto down = build_program("bloom_down");
+    if (!down) return Error{down.error()};
+    auto up = build_program("bloom_up");
+    if (!up) return Error{up.error()};
+    BloomPass b(std::move(down).value(), std::move(up).value());
+    b.empty_ = make_vertex_array();
+    b.width_ = width;
+    b.height_ = height;
+    int w = width / 2, h = height / 2;
+    while (static_cast<int>(b.levels_.size()) < kMaxLevels && std::min(w, h) >= kMinSide) {
+        Level level;
+        level.width = w;
+        level.height = h;
+        level.texture = make_texture();
+        glBindTexture(GL_TEXTURE_2D, level.texture.get());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, w, h);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        level.framebuffer = make_framebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               level.texture.get(), 0);
+        if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
+            return Error{"glare: the GPU cannot render to RGBA16F"};
+        }
+        b.levels_.push_back(std::move(level));
+        w /= 2;
+        h /= 2;
+    }
+    if (b.levels_.empty()) return Error{"glare: the picture is too small for a glare pyramid"};
+    auto ok = gl_check("glare: allocate");
+    if (!ok) return Error{ok.error()};
+    return b;
+}
+
+Result<bool> BloomPass::run(GLuint scene) {
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(empty_.get());
+    glActiveTexture(GL_TEXTURE0);
+    down_.use();
+    down_.set("u_source", 0);
+    GLuint source = scene;
+    glm::vec2 source_texel(1.0f / static_cast<float>(width_), 1.0f / static_cast<float>(height_));
+    for (std::size_t i = 0; i < levels_.size(); ++i) {
+        const Level& level = levels_[i];
+        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
+        glViewport(0, 0, level.width, level.height);
+        glBindTexture(GL_TEXTURE_2D, source);
+        down_.set("u_source_texel", source_texel);
+        down_.set("u_karis", i == 0 ? 1 : 0);
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        source = level.texture.get();
+        source_texel = glm::vec2(1.0f / static_cast<float>(level.width),
+                                 1.0f / static_cast<float>(level.height));
+    }
+    up_.use();
+    up_.set("u_source", 0);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_ONE, GL_ONE);
+    for (std::size_t i = levels_.size() - 1; i-- > 0;) {
+        const Level& smaller = levels_[i + 1];
+        const Level& level = levels_[i];
+        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
+        glViewport(0, 0, level.width, level.height);
+        glBindTexture(GL_TEXTURE_2D, smaller.texture.get());
+        up_.set("u_source_texel", glm::vec2(1.0f / static_cast<float>(smaller.width),
+                                            1.0f / static_cast<float>(smaller.height)));
+        up_.set("u_target_texel", glm::vec2(1.0f / static_cast<float>(level.width),
+                                            1.0f / static_cast<float>(level.height)));
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
+    glDisable(GL_BLEND);
+    return gl_check("glare pass");
+}
+
+}  // namespace gem::gpu

@@ -1,0 +1,173 @@
+#include "gpu/hdr_picture.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+
+#include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
+
+namespace gem::gpu {
+
+namespace {
+
+// Samples the GPU offers for `format` as a renderbuffer (its largest, 0 when none).
+int max_samples(GLenum format) {
+    GLint count = 0;
+    glGetInternalformativ(GL_RENDERBUFFER, format, GL_NUM_SAMPLE_COUNTS, 1, &count);
+    if (count <= 0) return 0;
+    GLint largest = 0;
+    glGetInternalformativ(GL_RENDERBUFFER, format, GL_SAMPLES, 1, &largest);  // descending
+    return largest;
+}
+
+bool complete() {
+    return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
+}
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+}  // namespace
+
+Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions& options) {
+    GLint max_size = 0;
+    glGetIntegerv(GL_MAX_RENDERBUFFER_SIZE, &max_size);
+    if (width < 1 || height < 1 || width > max_size || height > max_size) {
+        return Error{"picture: " + std::to_string(width) + "×" + std::to_string(height) +
+                     " is outside 1.." + std::to_string(max_size)};
+    }
+    auto finish = build_program("finish");
+    if (!finish) return Error{finish.error()};
+    HdrPicture p(std::move(finish).value());
+    p.options_ = options;
+    p.width_ = width;
+    p.height_ = height;
+    while (glGetError() != GL_NO_ERROR) {
+    }
+
+    // The resolved (or only) scene picture: RGBA16F where renderable, else 8-bit sRGB.
+    for (const GLenum format : {GLenum(GL_RGBA16F), GLenum(GL_SRGB8_ALPHA8)}) {
+        p.resolved_ = make_texture();
+        glBindTexture(GL_TEXTURE_2D, p.resolved_.get());
+        glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        p.resolved_depth_ = make_renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, p.resolved_depth_.get());
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        p.resolved_framebuffer_ = make_framebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, p.resolved_framebuffer_.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
+                               p.resolved_.get(), 0);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  p.resolved_depth_.get());
+        p.high_range_ = format == GL_RGBA16F;
+        if (glGetError() == GL_NO_ERROR && complete()) break;
+        p.resolved_framebuffer_.reset();
+    }
+    if (!p.resolved_framebuffer_) return Error{"picture: no renderable colour format"};
+    const GLenum colour_format = p.high_range_ ? GLenum(GL_RGBA16F) : GLenum(GL_SRGB8_ALPHA8);
+
+    const int samples =
+        std::min({options.samples, max_samples(colour_format), max_samples(GL_DEPTH_COMPONENT24)});
+    if (samples > 1) {
+        p.multisampled_colour_ = make_renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_colour_.get());
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colour_format, width, height);
+        p.multisampled_depth_ = make_renderbuffer();
+        glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_depth_.get());
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width,
+                                         height);
+        p.multisampled_ = make_framebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, p.multisampled_.get());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                  p.multisampled_colour_.get());
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+                                  p.multisampled_depth_.get());
+        if (glGetError() == GL_NO_ERROR && complete()) {
+            glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &p.samples_);
+            p.samples_ = std::max(p.samples_, 1);
+        } else {
+            p.multisampled_.reset();
+        }
+    }
+
+    if (p.high_range_ && options.glare > 0.0) {
+        auto glare = BloomPass::make(width, height);
+        if (!glare) return Error{glare.error()};
+        p.glare_.emplace(std::move(glare).value());
+    }
+    p.empty_ = make_vertex_array();
+    auto ok = gl_check("picture: allocate");
+    if (!ok) return Error{ok.error()};
+    return p;
+}
+
+void HdrPicture::bind() const {
+    glBindFramebuffer(GL_FRAMEBUFFER,
+                      multisampled_ ? multisampled_.get() : resolved_framebuffer_.get());
+    glViewport(0, 0, width_, height_);
+}
+
+Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times) {
+    auto t0 = std::chrono::steady_clock::now();
+    const auto lap = [&](double* into) {
+        if (times == nullptr) return;
+        glFinish();
+        *into = ms_since(t0);
+        t0 = std::chrono::steady_clock::now();
+    };
+    if (times != nullptr) glFinish();
+    t0 = std::chrono::steady_clock::now();
+    if (multisampled_) {
+        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.get());
+        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.get());
+        glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+                          GL_NEAREST);
+    }
+    lap(times ? &times->resolve_ms : nullptr);
+    const bool glare = glare_ && options_.glare > 0.0;
+    if (glare) {
+        auto ran = glare_->run(resolved_.get());
+        if (!ran) return ran;
+    }
+    lap(times ? &times->glare_ms : nullptr);
+
+    picture.bind();
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    finish_.use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, resolved_.get());
+    finish_.set("u_scene", 0);
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, glare ? glare_->glare_texture() : resolved_.get());
+    finish_.set("u_glare", 1);
+    finish_.set("u_glare_share", glare ? static_cast<float>(options_.glare) : 0.0f);
+    finish_.set("u_glare_levels", glare ? static_cast<float>(glare_->levels()) : 1.0f);
+    finish_.set("u_exposure", static_cast<float>(std::exp2(options_.display.exposure_ev)));
+    finish_.set("u_tone_curve", options_.display.curve == ToneCurve::clip ? 0 : 1);
+    glBindVertexArray(empty_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    glActiveTexture(GL_TEXTURE0);
+    lap(times ? &times->tone_ms : nullptr);
+    return gl_check("picture: finish");
+}
+
+std::string HdrPicture::describe() const {
+    char line[160];
+    std::snprintf(
+        line, sizeof line, "%s, %d× MSAA, %s, %s at %+.1f EV",
+        high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
+        glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
+                                          " over " + std::to_string(glare_->levels()) + " levels")
+                                             .c_str()
+                                       : "no glare",
+        to_string(options_.display.curve), options_.display.exposure_ev);
+    return line;
+}
+
+}  // namespace gem::gpu

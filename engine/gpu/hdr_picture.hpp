@@ -1,0 +1,76 @@
+#pragma once
+// The picture as the scene is drawn into it, before the display: linear radiance in RGBA16F
+// (highlights above 1 kept), multisampled, with a depth buffer. finish() resolves the
+// samples, spreads the glare (bloom_pass.hpp) and applies the exposure and tone curve
+// (render/tone_map.hpp) into a display picture (render_target.hpp), which the kiosk presents
+// and snapshots and gemrender writes.
+//
+// Where the GPU cannot render RGBA16F (ES 3.0 without EXT_color_buffer_half_float) the scene
+// goes into 8-bit sRGB instead: highlights clip before the tone curve and there is no glare;
+// where it cannot multisample RGBA16F, it draws one sample. describe() says which.
+
+#include <optional>
+#include <string>
+
+#include "gpu/bloom_pass.hpp"
+#include "gpu/gl_handles.hpp"
+#include "gpu/program.hpp"
+#include "gpu/render_target.hpp"
+#include "render/tone_map.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+struct PictureOptions {
+    int samples = 4;           // MSAA samples asked for; fewer where the GPU has fewer
+    DisplayTransform display;  // exposure and tone curve
+    double glare = 0.04;       // share of the picture spread into glare; 0: none
+};
+
+// Each pass's time, measured with glFinish between passes (only when asked: it stalls).
+struct FinishTimes {
+    double resolve_ms = 0.0;
+    double glare_ms = 0.0;
+    double tone_ms = 0.0;
+};
+
+class HdrPicture {
+  public:
+    // Errors: a size outside the GPU's limits, no renderable colour format at all.
+    static Result<HdrPicture> make(int width, int height, const PictureOptions& options);
+
+    // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture.
+    void bind() const;
+    // The scene into `picture` (the same size). `times`: measure each pass (stalls the GPU).
+    Result<bool> finish(const RenderTarget& picture, FinishTimes* times = nullptr);
+
+    void set_display(const DisplayTransform& display) { options_.display = display; }
+    const PictureOptions& options() const { return options_; }
+    int samples() const { return samples_; }
+    bool high_range() const { return high_range_; }
+    int width() const { return width_; }
+    int height() const { return height_; }
+    // "RGBA16F, 4× MSAA, glare 0.04 over 6 levels, neutral at +0.0 EV".
+    std::string describe() const;
+
+  private:
+    explicit HdrPicture(Program finish) : finish_(std::move(finish)) {}
+
+    PictureOptions options_;
+    int width_ = 0;
+    int height_ = 0;
+    int samples_ = 1;
+    bool high_range_ = true;
+    // Multisampled: the scene renderbuffers, resolved into resolved_; else drawn there.
+    Framebuffer multisampled_;
+    Renderbuffer multisampled_colour_;
+    Renderbuffer multisampled_depth_;
+    Framebuffer resolved_framebuffer_;
+    Texture resolved_;
+    Renderbuffer resolved_depth_;
+    std::optional<BloomPass> glare_;
+    Program finish_;
+    VertexArray empty_;
+};
+
+}  // namespace gem::gpu

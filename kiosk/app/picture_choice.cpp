@@ -1,0 +1,20 @@
+#include "app/picture_choice.hpp"
+
+namespace gem::kiosk {
+
+DisplayTransform display_transform(const PictureConfig& picture, const LookChoice& look) {
+    DisplayTransform t;
+    t.curve = picture.tone == PictureTone::clip ? ToneCurve::clip : ToneCurve::neutral;
+    t.exposure_ev = picture.exposure_ev + look.exposure_ev;
+    return t;
+}
+
+gpu::PictureOptions picture_options(const PictureConfig& picture) {
+    gpu::PictureOptions o;
+    o.samples = picture.msaa;
+    o.glare = picture.glare;
+    o.display = display_transform(picture, LookChoice{});
+    return o;
+}
+
+}  // namespace gem::kiosk

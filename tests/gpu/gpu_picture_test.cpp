@@ -1,0 +1,180 @@
+// The picture's finishing passes (gpu/hdr_picture.hpp): the GPU tone curve against the CPU's
+// (render/tone_map.cpp), multisampled edges against a 16-sample supersampled render, the glare
+// keeping the picture's energy, and the framing shift against a plain translation.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "geometry/cuts.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "gpu/gl_check.hpp"
+#include "gpu/hdr_picture.hpp"
+#include "gpu_test_support.hpp"
+#include "optics/colour.hpp"
+#include "optics/material.hpp"
+
+namespace gem {
+namespace {
+
+// Fills a w × h block at (x, y) of the bound framebuffer (y up) with `colour`.
+void fill(int x, int y, int w, int h, glm::vec3 colour) {
+    glEnable(GL_SCISSOR_TEST);
+    glScissor(x, y, w, h);
+    glClearColor(colour.x, colour.y, colour.z, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT);
+    glDisable(GL_SCISSOR_TEST);
+}
+
+TEST(GpuPicture, TheFinishPassToneMapsAsTheCpuDoes) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 96;
+    for (ToneCurve curve : {ToneCurve::neutral, ToneCurve::clip}) {
+        const DisplayTransform display{curve, 0.5};
+        auto hdr = gpu::HdrPicture::make(n, 1, {.samples = 1, .display = display, .glare = 0.0});
+        ASSERT_TRUE(hdr.ok()) << hdr.error();
+        ASSERT_TRUE(hdr.value().high_range()) << hdr.value().describe();
+        auto picture = gpu::RenderTarget::make(n, 1);
+        ASSERT_TRUE(picture.ok()) << picture.error();
+        // From black to 40x the display's white, tinted so the channels differ.
+        std::vector<glm::dvec3> in(n);
+        hdr.value().bind();
+        for (int x = 0; x < n; ++x) {
+            const double v = 40.0 * std::pow(x / double(n - 1), 3.0);
+            in[x] = glm::dvec3(v, 0.55 * v, 0.2 * v);
+            fill(x, 0, 1, 1, glm::vec3(in[x]));
+        }
+        ASSERT_TRUE(hdr.value().finish(picture.value()).ok());
+        const Image out = picture.value().read();
+        for (int x = 0; x < n; ++x) {
+            const glm::dvec3 expected = to_display(in[x], display);
+            for (int c = 0; c < 3; ++c) {
+                const int got = linear_to_srgb8(out.at(x, 0)[c]);
+                const int want = linear_to_srgb8(expected[c]);
+                EXPECT_NEAR(got, want, 1) << to_string(curve) << " input " << in[x][c];
+            }
+        }
+    }
+    EXPECT_TRUE(gpu::gl_check("tone test").ok());
+}
+
+// The diamond drawn by the phong baseline (opaque, flat-shaded facets over black) into an
+// HDR picture of `size` with `samples`, finished without a tone curve.
+Image draw_diamond(int size, int samples, glm::dvec2 shift = glm::dvec2(0.0)) {
+    static const Environment environment = Environment::uniform(glm::dvec3(0.4));
+    gpu::FrameSetup setup;
+    setup.method = gpu::Method::phong;
+    setup.stone =
+        make_cut(default_cut_params(CutShape::round_brilliant), find_material("diamond").value())
+            .value();
+    setup.material = setup.stone.material;
+    setup.material.body_colour = {0.9, 0.6, 0.3};
+    setup.shading.alpha = 0.0;  // opaque
+    setup.shading.lights.push_back({{20.0, 60.0, 40.0}, false, {0.6, 0.6, 0.6}});
+    setup.environment = &environment;
+    setup.cube_face = 8;
+    setup.background_colour = glm::vec3(0.0f);
+    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    EXPECT_TRUE(renderer.ok()) << renderer.error();
+    CameraSettings settings;
+    settings.azimuth_deg = 20.0;
+    settings.elevation_deg = 40.0;
+    settings.zoom = 0.9;
+    settings.shift = shift;
+    auto camera = Camera::make(settings, renderer.value().scene_radius_mm(), size, size).value();
+    auto hdr = gpu::HdrPicture::make(
+        size, size, {.samples = samples, .display = {ToneCurve::clip, 0.0}, .glare = 0.0});
+    EXPECT_TRUE(hdr.ok()) << hdr.error();
+    auto picture = gpu::RenderTarget::make(size, size);
+    hdr.value().bind();
+    EXPECT_TRUE(renderer.value().render(camera, true).ok());
+    EXPECT_TRUE(hdr.value().finish(picture.value()).ok());
+    return picture.value().read();
+}
+
+TEST(GpuPicture, MultisampledEdgesComeCloserToASupersampledRender) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 64, k = 4;
+    const Image one = draw_diamond(n, 1);
+    const Image msaa = draw_diamond(n, 4);
+    // The reference: k × k ordered samples per pixel, a box filter of a render k times larger.
+    const Image big = draw_diamond(n * k, 1);
+    Image reference(n, n);
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            glm::vec4 sum(0.0f);
+            for (int j = 0; j < k; ++j) {
+                for (int i = 0; i < k; ++i) sum += big.at(x * k + i, y * k + j);
+            }
+            reference.at(x, y) = sum / float(k * k);
+        }
+    }
+    // Edge pixels: where the reference's 16 samples disagree (a silhouette or a facet edge).
+    double error_one = 0.0, error_msaa = 0.0;
+    int edges = 0;
+    for (int y = 0; y < n; ++y) {
+        for (int x = 0; x < n; ++x) {
+            glm::vec4 lo(1e9f), hi(-1e9f);
+            for (int j = 0; j < k; ++j) {
+                for (int i = 0; i < k; ++i) {
+                    lo = glm::min(lo, big.at(x * k + i, y * k + j));
+                    hi = glm::max(hi, big.at(x * k + i, y * k + j));
+                }
+            }
+            if (hi.x - lo.x < 0.05f) continue;
+            ++edges;
+            error_one += std::abs(one.at(x, y).x - reference.at(x, y).x);
+            error_msaa += std::abs(msaa.at(x, y).x - reference.at(x, y).x);
+        }
+    }
+    ASSERT_GT(edges, 100);
+    gpu_test::write_artifact(one, "picture_edges_1x");
+    gpu_test::write_artifact(msaa, "picture_edges_4x");
+    // Four samples leave less than half the single sample's error on the edges.
+    EXPECT_LT(error_msaa, 0.5 * error_one)
+        << "mean edge error 1x " << error_one / edges << ", 4x " << error_msaa / edges;
+}
+
+TEST(GpuPicture, TheGlareSpreadsLightWithoutAddingOrLosingAny) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 128;
+    auto hdr = gpu::HdrPicture::make(
+        n, n, {.samples = 1, .display = {ToneCurve::clip, 0.0}, .glare = 0.5});
+    ASSERT_TRUE(hdr.ok()) << hdr.error();
+    auto picture = gpu::RenderTarget::make(n, n);
+    ASSERT_TRUE(picture.ok());
+    hdr.value().bind();
+    fill(0, 0, n, n, glm::vec3(0.0f));
+    fill(56, 56, 16, 16, glm::vec3(0.9f));
+    ASSERT_TRUE(hdr.value().finish(picture.value()).ok());
+    const Image out = picture.value().read();
+    double sum = 0.0;
+    for (const glm::vec4& p : out.pixels) sum += p.x;
+    const double energy = 0.9 * 16 * 16;
+    EXPECT_NEAR(sum, energy, 0.04 * energy);
+    EXPECT_LT(out.at(64, 64).x, 0.85f);  // light leaves the square
+    EXPECT_GT(out.at(64, 30).x, 0.0f);   // and reaches pixels far from it
+}
+
+TEST(GpuPicture, AShiftTranslatesThePictureByWholePixels) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 64;
+    const Image plain = draw_diamond(n, 1);
+    // ndc (0.25, -0.5) is 8 pixels right and 16 down.
+    const Image shifted = draw_diamond(n, 1, {0.25, -0.5});
+    int compared = 0, differing = 0;
+    for (int y = 0; y + 16 < n; ++y) {
+        for (int x = 0; x + 8 < n; ++x) {
+            ++compared;
+            const glm::vec4 a = plain.at(x, y), b = shifted.at(x + 8, y + 16);
+            if (std::abs(linear_to_srgb8(a.x) - linear_to_srgb8(b.x)) > 2) ++differing;
+        }
+    }
+    EXPECT_LE(differing, compared / 100) << differing << " of " << compared;
+}
+
+}  // namespace
+}  // namespace gem
