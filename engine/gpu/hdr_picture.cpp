@@ -95,6 +95,21 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         }
     }
 
+    if (p.high_range_ && options.still_frames > 1) {
+        auto accumulate = build_program("accumulate");
+        if (!accumulate) return Error{accumulate.error()};
+        p.accumulate_.emplace(std::move(accumulate).value());
+        p.mean_ = make_texture();
+        glBindTexture(GL_TEXTURE_2D, p.mean_.get());
+        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        p.mean_framebuffer_ = make_framebuffer();
+        glBindFramebuffer(GL_FRAMEBUFFER, p.mean_framebuffer_.get());
+        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p.mean_.get(),
+                               0);
+        if (!complete()) return Error{"picture: the still view's mean cannot be rendered"};
+    }
     if (p.high_range_ && options.glare > 0.0) {
         auto glare = BloomPass::make(width, height);
         if (!glare) return Error{glare.error()};
@@ -104,6 +119,34 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     auto ok = gl_check("picture: allocate");
     if (!ok) return Error{ok.error()};
     return p;
+}
+
+void HdrPicture::begin_frame(bool still) {
+    if (!accumulate_ || !still) {
+        still_index_ = -1;
+        return;
+    }
+    still_index_ = std::min(still_index_ + 1, options_.still_frames);
+}
+
+bool HdrPicture::settled() const {
+    return accumulate_ && still_index_ >= options_.still_frames;
+}
+
+glm::dvec2 HdrPicture::jitter_ndc() const {
+    // The first frame of a still view is the moving view's own (no offset): the picture does
+    // not jump when a turn stops. Then Halton (2, 3), centred on the pixel.
+    if (still_index_ <= 0) return glm::dvec2(0.0);
+    const auto halton = [](int i, int base) {
+        double f = 1.0, r = 0.0;
+        for (; i > 0; i /= base) {
+            f /= base;
+            r += f * (i % base);
+        }
+        return r;
+    };
+    const glm::dvec2 offset_px(halton(still_index_, 2) - 0.5, halton(still_index_, 3) - 0.5);
+    return offset_px * glm::dvec2(2.0 / width_, 2.0 / height_);
 }
 
 void HdrPicture::bind() const {
@@ -128,10 +171,28 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
                           GL_NEAREST);
     }
+    GLuint scene = resolved_.get();
+    if (still_index_ >= 0 && still_index_ < options_.still_frames) {
+        // The running mean: the k-th frame (from 0) has weight 1 / (k + 1).
+        glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
+        glViewport(0, 0, width_, height_);
+        glDisable(GL_DEPTH_TEST);
+        glEnable(GL_BLEND);
+        glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(still_index_ + 1));
+        glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
+        accumulate_->use();
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, resolved_.get());
+        accumulate_->set("u_scene", 0);
+        glBindVertexArray(empty_.get());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+        glDisable(GL_BLEND);
+    }
+    if (still_index_ >= 0) scene = mean_.get();
     lap(times ? &times->resolve_ms : nullptr);
     const bool glare = glare_ && options_.glare > 0.0;
     if (glare) {
-        auto ran = glare_->run(resolved_.get());
+        auto ran = glare_->run(scene);
         if (!ran) return ran;
     }
     lap(times ? &times->glare_ms : nullptr);
@@ -141,10 +202,10 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     glDisable(GL_BLEND);
     finish_.use();
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, resolved_.get());
+    glBindTexture(GL_TEXTURE_2D, scene);
     finish_.set("u_scene", 0);
     glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, glare ? glare_->glare_texture() : resolved_.get());
+    glBindTexture(GL_TEXTURE_2D, glare ? glare_->glare_texture() : scene);
     finish_.set("u_glare", 1);
     finish_.set("u_glare_share", glare ? static_cast<float>(options_.glare) : 0.0f);
     finish_.set("u_glare_levels", glare ? static_cast<float>(glare_->levels()) : 1.0f);
@@ -158,15 +219,16 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
 }
 
 std::string HdrPicture::describe() const {
-    char line[160];
-    std::snprintf(
-        line, sizeof line, "%s, %d× MSAA, %s, %s at %+.1f EV",
-        high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
-        glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
-                                          " over " + std::to_string(glare_->levels()) + " levels")
-                                             .c_str()
-                                       : "no glare",
-        to_string(options_.display.curve), options_.display.exposure_ev);
+    char line[200];
+    std::snprintf(line, sizeof line, "%s, %d× MSAA, %d frames a still view, %s, %s at %+.1f EV",
+                  high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)",
+                  samples_, accumulate_ ? options_.still_frames : 1,
+                  glare_ && options_.glare > 0.0
+                      ? ("glare " + std::to_string(options_.glare).substr(0, 4) + " over " +
+                         std::to_string(glare_->levels()) + " levels")
+                            .c_str()
+                      : "no glare",
+                  to_string(options_.display.curve), options_.display.exposure_ev);
     return line;
 }
 

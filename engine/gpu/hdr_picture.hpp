@@ -8,8 +8,16 @@
 // Where the GPU cannot render RGBA16F (ES 3.0 without EXT_color_buffer_half_float) the scene
 // goes into 8-bit sRGB instead: highlights clip before the tone curve and there is no glare;
 // where it cannot multisample RGBA16F, it draws one sample. describe() says which.
+//
+// A still view gets better with every frame: the frames drawn while the view stays still are
+// averaged, each with the camera moved by a different sub-pixel offset (jitter_ndc(), the
+// Halton (2, 3) sequence), so edges inside the stone, where the rays' paths through it change,
+// are sampled several times a pixel as the CPU reference samples them. Any motion restarts
+// the mean; after `still_frames` frames more drawing changes nothing (settled()).
 
 #include <optional>
+
+#include <glm/vec2.hpp>
 #include <string>
 
 #include "gpu/bloom_pass.hpp"
@@ -25,6 +33,7 @@ struct PictureOptions {
     int samples = 4;           // MSAA samples asked for; fewer where the GPU has fewer
     DisplayTransform display;  // exposure and tone curve
     double glare = 0.04;       // share of the picture spread into glare; 0: none
+    int still_frames = 16;     // frames averaged while the view is still; 1: none
 };
 
 // Each pass's time, measured with glFinish between passes (only when asked: it stalls).
@@ -39,6 +48,12 @@ class HdrPicture {
     // Errors: a size outside the GPU's limits, no renderable colour format at all.
     static Result<HdrPicture> make(int width, int height, const PictureOptions& options);
 
+    // Before drawing each frame: `still` says its view is the last frame's. The camera of the
+    // frame should be moved by jitter_ndc() (CameraSettings::shift).
+    void begin_frame(bool still);
+    glm::dvec2 jitter_ndc() const;
+    // The still view has its still_frames frames: drawing it again changes nothing.
+    bool settled() const;
     // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture.
     void bind() const;
     // The scene into `picture` (the same size). `times`: measure each pass (stalls the GPU).
@@ -68,6 +83,10 @@ class HdrPicture {
     Framebuffer resolved_framebuffer_;
     Texture resolved_;
     Renderbuffer resolved_depth_;
+    Texture mean_;  // the still view's running mean (RGBA16F)
+    Framebuffer mean_framebuffer_;
+    int still_index_ = -1;  // this frame's place in the still view's mean; -1: moving
+    std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;
     Program finish_;
     VertexArray empty_;

@@ -27,6 +27,7 @@ std::vector<ProgramSpec> all_program_specs() {
         // (hdr_picture.hpp, bloom_pass.hpp).
         {"bloom_down", {"fullscreen.vert"}, {"bloom_down.frag"}, {}},
         {"bloom_up", {"fullscreen.vert"}, {"bloom_up.frag"}, {}},
+        {"accumulate", {"fullscreen.vert"}, {"accumulate.frag"}, {}},
         {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
         // The kiosk's rotate-and-encode copy to the window surface (kiosk/display/present_pass).
         {"present", {"fullscreen.vert"}, {"present.frag"}, {}},

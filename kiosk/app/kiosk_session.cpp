@@ -364,6 +364,11 @@ void KioskSession::choose_render_method() {
     }
 }
 
+bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
+    return a.azimuth_deg == b.azimuth_deg && a.elevation_deg == b.elevation_deg &&
+           a.roll_deg == b.roll_deg && a.zoom == b.zoom;
+}
+
 void KioskSession::drop_glare_if_it_pays(ProbeResult& probe, double budget_ms) {
     if (scene_picture_->options().glare <= 0.0 || !scene_picture_->high_range()) return;
     // The glare's own cost at this size, measured as the frames measured it (median of 5).
@@ -399,7 +404,8 @@ void KioskSession::drop_glare_if_it_pays(ProbeResult& probe, double budget_ms) {
 
 double KioskSession::draw_stone(double now_s, FrameRecord& record) {
     gpu::FrameRenderer& renderer = scene_->renderer();
-    auto camera = scene_->camera(gestures_->view(), display_->picture_size());
+    auto camera =
+        scene_->camera(gestures_->view(), display_->picture_size(), scene_picture_->jitter_ndc());
     if (!camera) {
         log_error("camera: " + camera.error());
         return 0.0;
@@ -433,23 +439,44 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     if (!display_ || !picture_) return std::optional<FrameRecord>{};
     gestures_->advance(now_s);
     apply_actions(now_s);
+    const bool rebuilt = scene_stale_;
     if (scene_stale_) rebuild_scene(now_s);
+
+    // A still view is refined frame by frame (hdr_picture.hpp); once it has all its frames,
+    // and no cross-fade is drawn over it, the picture on screen is shown again undrawn.
+    const ViewState view = gestures_->view();
+    const bool still = !rebuilt && last_view_ && same_view(*last_view_, view);
+    last_view_ = view;
+    scene_picture_->begin_frame(still);
+    const bool fading = crossfade_->active(now_s);
+    const bool redraw = !scene_picture_->settled() || fading || faded_last_frame_;
+    faded_last_frame_ = fading;
 
     FrameRecord record;
     record.start_s = monotonic_now_s();
     last_frame_start_s_ = record.start_s;
-    scene_picture_->bind();
-    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    if (scene_) draw_stone(now_s, record);
-    auto finished = scene_picture_->finish(*picture_);
-    if (!finished) return Error{finished.error()};
-    auto faded = crossfade_->draw(*picture_, now_s);
-    if (!faded) return Error{faded.error()};
+    if (redraw) {
+        scene_picture_->bind();
+        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        if (scene_) draw_stone(now_s, record);
+        auto finished = scene_picture_->finish(*picture_);
+        if (!finished) return Error{finished.error()};
+        auto faded = crossfade_->draw(*picture_, now_s);
+        if (!faded) return Error{faded.error()};
+    }
     auto presented = display_->present(*picture_);
     if (!presented) return Error{"display: " + presented.error()};
     if (!presented.value()) return std::optional<FrameRecord>{};  // drawn, but not shown
     const double done_s = monotonic_now_s();
+    if (!redraw) {
+        // On screen again, which the watchdog counts, but not a frame drawn: the figures are
+        // about drawing.
+        last_present_s_ = done_s;
+        notifier_.frame_presented(done_s);
+        write_requested_snapshot();
+        return std::optional<FrameRecord>{};
+    }
     record.draw_ms = (done_s - record.start_s) * 1000.0;
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
     if (oldest_unshown_input_s_ >= 0.0) {
@@ -477,11 +504,14 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         std::snprintf(name, sizeof name, "frame-%06ld.png", frame_number_);
         write_snapshot_file(name);
     }
-    if (snapshot_requested_) {
-        snapshot_requested_ = false;
-        write_snapshot_file("snapshot.png");
-    }
+    write_requested_snapshot();
     return std::optional<FrameRecord>(record);
+}
+
+void KioskSession::write_requested_snapshot() {
+    if (!snapshot_requested_) return;
+    snapshot_requested_ = false;
+    write_snapshot_file("snapshot.png");
 }
 
 void KioskSession::write_snapshot_file(const std::string& name) {

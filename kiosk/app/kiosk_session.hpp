@@ -69,7 +69,9 @@ class KioskSession {
     void drop_glare_if_it_pays(ProbeResult& probe, double budget_ms);
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
+    void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
     double draw_stone(double now_s, FrameRecord& record);
+    static bool same_view(const ViewState& a, const ViewState& b);
 
     KioskRun run_;
     KioskConfig config_;
@@ -103,6 +105,8 @@ class KioskSession {
     double last_present_s_ = -1.0;
     double last_frame_start_s_ = -1.0;
     bool snapshot_requested_ = false;
+    std::optional<ViewState> last_view_;  // the last frame's, to tell a still view
+    bool faded_last_frame_ = false;
     glm::dvec3 last_forward_{0.0};
     double last_forward_s_ = -1.0;
 };

@@ -13,6 +13,7 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
     gpu::PictureOptions o;
     o.samples = picture.msaa;
     o.glare = picture.glare;
+    o.still_frames = picture.still_frames;
     o.display = display_transform(picture, LookChoice{});
     return o;
 }

@@ -117,9 +117,11 @@ const Framing& StoneScene::framing(glm::ivec2 size) const {
     return framing_;
 }
 
-Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size) const {
-    return Camera::make(framed_camera(view, framing(size)), renderer_->scene_radius_mm(), size.x,
-                        size.y);
+Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size,
+                                  glm::dvec2 jitter_ndc) const {
+    CameraSettings settings = framed_camera(view, framing(size));
+    settings.shift += jitter_ndc;
+    return Camera::make(settings, renderer_->scene_radius_mm(), size.x, size.y);
 }
 
 }  // namespace gem::kiosk

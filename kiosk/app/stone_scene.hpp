@@ -60,8 +60,10 @@ class StoneScene {
     const Database& database() const { return *database_; }
     const std::string& name() const { return name_; }
     // The camera for `view` in a picture of `size`, framed as framing.hpp says at the start
-    // view (start_view.hpp); view.zoom scales that framing.
-    Result<Camera> camera(const ViewState& view, glm::ivec2 size) const;
+    // view (start_view.hpp); view.zoom scales that framing. `jitter_ndc`: a sub-pixel offset of
+    // the frame (HdrPicture::jitter_ndc).
+    Result<Camera> camera(const ViewState& view, glm::ivec2 size,
+                          glm::dvec2 jitter_ndc = glm::dvec2(0.0)) const;
     // The framing for a picture of `size` (computed once per size).
     const Framing& framing(glm::ivec2 size) const;
 

@@ -46,6 +46,7 @@ struct PictureConfig {
     double glare = 0.04;                      // share of the picture spread as glare; 0: none
     PictureTone tone = PictureTone::neutral;  // Khronos PBR Neutral, or a plain clip
     double exposure_ev = 0.0;                 // stops, added to each lighting preset's own
+    int still_frames = 16;                    // frames averaged, sub-pixel apart, while still
     // Start view: the girdle's width as a share of the picture's height, as far as the whole
     // ring still fits (app/framing.hpp).
     double stone_share = 0.25;

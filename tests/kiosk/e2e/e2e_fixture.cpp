@@ -186,22 +186,27 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render);
     if (!scene) return Error{scene.error()};
     gpu::FrameRenderer& renderer = scene.value()->renderer();
-    auto camera = scene.value()->camera(view, {kWidth, kHeight});
-    if (!camera) return Error{camera.error()};
     auto target = gpu::RenderTarget::make(kWidth, kHeight);
     if (!target) return Error{target.error()};
-    // The picture's finishing passes, as the kiosk's config sets them.
+    // The picture's finishing passes, as the kiosk's config sets them, and the frames a still
+    // view is averaged over once the kiosk's view has come to rest.
     gpu::PictureOptions options = kiosk::picture_options(config.config.picture);
     options.display = kiosk::display_transform(config.config.picture, selection.look());
     auto scene_picture = gpu::HdrPicture::make(kWidth, kHeight, options);
     if (!scene_picture) return Error{scene_picture.error()};
-    scene_picture.value().bind();
-    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    auto drawn = renderer.render(camera.value(), true);
-    if (!drawn) return Error{drawn.error()};
-    auto finished = scene_picture.value().finish(target.value());
-    if (!finished) return Error{finished.error()};
+    gpu::HdrPicture& picture = scene_picture.value();
+    for (int frame = 0; frame < options.still_frames; ++frame) {
+        picture.begin_frame(true);
+        auto camera = scene.value()->camera(view, {kWidth, kHeight}, picture.jitter_ndc());
+        if (!camera) return Error{camera.error()};
+        picture.bind();
+        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        auto drawn = renderer.render(camera.value(), true);
+        if (!drawn) return Error{drawn.error()};
+        auto finished = picture.finish(target.value());
+        if (!finished) return Error{finished.error()};
+    }
     return target.value().read();
 }
 
