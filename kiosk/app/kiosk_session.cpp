@@ -343,7 +343,7 @@ void KioskSession::choose_render_method() {
         return;
     }
     ProbeResult& r = probe.value();
-    if (!r.choice.fits) drop_glare_if_it_pays(r, budget_ms);
+    if (!r.choice.fits) shed_picture_extras(r, budget_ms);
     if (!r.choice.valid) {
         log_error("render.method auto: no candidate drew a frame; using table");
         return;
@@ -369,37 +369,37 @@ bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
            a.roll_deg == b.roll_deg && a.zoom == b.zoom;
 }
 
-void KioskSession::drop_glare_if_it_pays(ProbeResult& probe, double budget_ms) {
-    if (scene_picture_->options().glare <= 0.0 || !scene_picture_->high_range()) return;
-    // The glare's own cost at this size, measured as the frames measured it (median of 5).
-    std::vector<double> costs;
-    for (int i = 0; i < 5; ++i) {
-        gpu::FinishTimes times;
-        if (!scene_picture_->finish(*picture_, &times)) return;
-        costs.push_back(times.glare_ms);
-    }
-    std::nth_element(costs.begin(), costs.begin() + 2, costs.end());
-    const double glare_ms = costs[2];
-    std::vector<std::vector<double>> without = probe.frame_ms;
-    for (std::vector<double>& frames : without) {
-        for (double& ms : frames) ms -= glare_ms;
-    }
-    const MethodChoice choice =
-        choose_method(without, budget_ms, refractive_rungs(probe.candidates));
-    if (!choice.fits) return;
+void KioskSession::shed_picture_extras(ProbeResult& probe, double budget_ms) {
     gpu::PictureOptions options = scene_picture_->options();
+    const bool glare = options.glare > 0.0 && scene_picture_->high_range();
+    if (scene_picture_->samples() <= 1 && !glare) return;
+    const auto chosen_ms = [](const ProbeResult& r) {
+        const auto& statistic = r.choice.statistic_ms[r.choice.index];
+        return statistic ? *statistic : std::nan("");
+    };
+    const std::string chosen_with = chosen_name(probe);
+    const double with_ms = chosen_ms(probe);
+    options.samples = 1;
     options.glare = 0.0;
     auto remade = gpu::HdrPicture::make(picture_->width(), picture_->height(), options);
     if (!remade) return;
     scene_picture_.emplace(std::move(remade).value());
-    probe.frame_ms = std::move(without);
-    probe.choice = choice;
-    char line[200];
+    auto again = probe_methods(selection_->stone(), selection_->look(), render_, *scene_picture_,
+                               *picture_, kStartView, budget_ms);
+    if (!again || !again.value().choice.valid) return;
+    char line[240];
     std::snprintf(line, sizeof line,
-                  "picture: glare off: it costs %.1f ms a frame and no method holds the %.1f ms "
-                  "budget with it",
-                  glare_ms, budget_ms);
+                  "picture: MSAA and glare off: no method held the %.1f ms budget with them "
+                  "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
+                  "averaged over %d frames",
+                  budget_ms, chosen_with.c_str(), with_ms, chosen_name(again.value()).c_str(),
+                  chosen_ms(again.value()), options.still_frames);
     log_warning(line);
+    probe = std::move(again).value();
+}
+
+std::string KioskSession::chosen_name(const ProbeResult& probe) {
+    return probe.candidates[probe.choice.index].name;
 }
 
 double KioskSession::draw_stone(double now_s, FrameRecord& record) {

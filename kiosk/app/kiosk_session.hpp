@@ -64,9 +64,11 @@ class KioskSession {
     void rebuild_scene(double now_s);
     // render.method = auto: measures the candidates and sets render_ (method_probe.hpp).
     void choose_render_method();
-    // When no method holds the frame rate with the glare on but one does without it, turns
-    // the glare off (measured: its passes' time at this size) and says so in the log.
-    void drop_glare_if_it_pays(ProbeResult& probe, double budget_ms);
+    // When no method holds the frame rate with the picture's extras (MSAA, glare), the picture
+    // is made without them and the methods are probed again; the journal says what each
+    // measured. Still views keep their averaged frames (they cost nothing while turning).
+    void shed_picture_extras(ProbeResult& probe, double budget_ms);
+    static std::string chosen_name(const ProbeResult& probe);  // the chosen candidate's name
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
