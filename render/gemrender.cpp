@@ -174,6 +174,9 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(1, 16));
     app.add_option("--glare", o.gpu.glare, "GPU: share of the picture spread as glare (0: none)")
         ->check(CLI::Range(0.0, 1.0));
+    app.add_option("--still-frames", o.gpu.still_frames,
+                   "GPU, one picture: average this many frames a sub-pixel apart")
+        ->check(CLI::Range(1, 256));
     CLI11_PARSE(app, argc, argv);
     o.gpu.display.curve = *gem::tone_curve_named(o.tone);
     o.gpu.display.exposure_ev = o.exposure_ev;

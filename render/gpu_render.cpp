@@ -115,7 +115,10 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     auto target = gpu::RenderTarget::make(scene.width, scene.height);
     if (!target) return fail(target.error());
     auto hdr = gpu::HdrPicture::make(scene.width, scene.height,
-                                     {.samples = o.msaa, .display = o.display, .glare = o.glare});
+                                     {.samples = o.msaa,
+                                      .display = o.display,
+                                      .glare = o.glare,
+                                      .still_frames = o.still_frames});
     if (!hdr) return fail(hdr.error());
     std::printf("gemrender: picture %s\n", hdr.value().describe().c_str());
 
@@ -142,6 +145,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
                                      camera.value().pixel_size()));
         }
         const auto start = std::chrono::steady_clock::now();
+        hdr.value().begin_frame(false);
         hdr.value().bind();
         auto stats = r.render(camera.value(), false);
         if (!stats) return fail(stats.error());
@@ -151,6 +155,21 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         frame_ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
+        // A single picture is a still view: as the kiosk refines one, frames a sub-pixel apart
+        // averaged (not timed: the time above is one frame's).
+        for (int still = 0; o.frames == 1 && still < o.still_frames && o.still_frames > 1;
+             ++still) {
+            hdr.value().begin_frame(true);
+            CameraSettings jittered = cs;
+            jittered.shift += hdr.value().jitter_ndc();
+            auto moved = Camera::make(jittered, r.stone_radius_mm(), scene.width, scene.height);
+            if (!moved) return fail(moved.error());
+            hdr.value().bind();
+            auto drawn = r.render(moved.value(), false);
+            if (!drawn) return fail(drawn.error());
+            auto done = hdr.value().finish(target.value());
+            if (!done) return fail(done.error());
+        }
         const gpu::TableFrameStats& t = stats.value().table;
         stream_ms.push_back(t.acquire_ms + t.upload_ms + t.wait_ms);
         if (o.frames > 1) {

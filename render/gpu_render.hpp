@@ -24,6 +24,8 @@ struct GpuRenderOptions {
     DisplayTransform display;  // exposure and tone curve, as the CPU reference's PNG gets
     int msaa = 4;              // samples per pixel of the rasterised stone and ring
     double glare = 0.0;        // glare share (the kiosk's bloom); 0 compares with the CPU
+    int still_frames = 1;      // one picture: frames a sub-pixel apart averaged, as a still
+                               // kiosk view is
 };
 
 // Returns the process exit status; messages go to stdout/stderr prefixed "gemrender:".

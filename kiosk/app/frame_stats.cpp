@@ -17,8 +17,12 @@ double quantile(std::vector<double> values, double p) {
 }
 
 void FrameStats::add(const FrameRecord& record) {
-    frames_.push_back(record);
     ++total_;
+    if (!record.drawn) {
+        ++shown_again_;
+        return;
+    }
+    frames_.push_back(record);
     if (max_records_ > 0 && frames_.size() > max_records_) frames_.pop_front();
 }
 
@@ -49,14 +53,17 @@ std::string FrameStats::summary() const {
     std::snprintf(head, sizeof head, "%zu frames in %.1f s: %.2f frames/s; ", frames_.size(),
                   span_s, span_s > 0.0 ? static_cast<double>(frames_.size()) / span_s : 0.0);
     std::string s = head;
-    if (static_cast<long>(frames_.size()) < total_) {
-        s = std::to_string(total_) + " frames, the last " + s;
+    if (static_cast<long>(frames_.size()) < total_ - shown_again_) {
+        s = std::to_string(total_ - shown_again_) + " frames, the last " + s;
     }
     s += describe("draw", draw);
     if (!interval.empty()) s += "; " + describe("interval", interval);
     if (!latency.empty()) {
         s += "; " + describe("input-to-frame", latency) + " (" + std::to_string(latency.size()) +
              " frames with new input)";
+    }
+    if (shown_again_ > 0) {
+        s += "; " + std::to_string(shown_again_) + " more shown again undrawn (a settled view)";
     }
     return s;
 }

@@ -17,6 +17,9 @@ struct FrameRecord {
     double interval_ms = 0.0;   // since the previous presented frame (0 for the first)
     double latency_ms = -1.0;   // oldest input event shown for the first time; -1: none
     double streaming_ms = 0.0;  // table views: cache lookups, waits and uploads
+    // False: the picture on screen shown again undrawn (a settled still view); it counts in
+    // total() but not in the drawing figures.
+    bool drawn = true;
 };
 
 class FrameStats {
@@ -26,7 +29,7 @@ class FrameStats {
     explicit FrameStats(std::size_t max_records = 0) : max_records_(max_records) {}
     void add(const FrameRecord& record);
     const std::deque<FrameRecord>& frames() const { return frames_; }
-    long total() const { return total_; }  // every frame added, kept or not
+    long total() const { return total_; }  // every frame added, kept or not, drawn or not
 
     // "600 frames in 40.1 s: 15.0 frames/s; draw ms p50 63.1 p90 70.2 p99 81.0 max 90.3;
     //  input-to-frame ms p50 .. (n events)".
@@ -38,6 +41,7 @@ class FrameStats {
     std::size_t max_records_;
     std::deque<FrameRecord> frames_;
     long total_ = 0;
+    long shown_again_ = 0;
 };
 
 // The p-quantile (0..1) of `values` by the nearest-rank method; 0 for an empty list.

@@ -475,7 +475,8 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         last_present_s_ = done_s;
         notifier_.frame_presented(done_s);
         write_requested_snapshot();
-        return std::optional<FrameRecord>{};
+        record.drawn = false;
+        return std::optional<FrameRecord>(record);
     }
     record.draw_ms = (done_s - record.start_s) * 1000.0;
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;

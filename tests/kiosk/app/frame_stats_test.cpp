@@ -33,6 +33,20 @@ TEST(FrameStats, SummaryCountsFramesOverTheirSpan) {
     EXPECT_NE(s.find("(1 frames with new input)"), std::string::npos) << s;
 }
 
+TEST(FrameStats, FramesShownAgainCountButDoNotTime) {
+    FrameStats stats;
+    stats.add({.start_s = 0.0, .draw_ms = 100.0});
+    stats.add({.start_s = 0.5, .draw_ms = 100.0, .interval_ms = 500.0});
+    // A settled view shown again three times, each in a millisecond: not drawing.
+    for (int i = 0; i < 3; ++i) stats.add({.start_s = 1.0 + i, .draw_ms = 1.0, .drawn = false});
+    EXPECT_EQ(stats.total(), 5);
+    EXPECT_EQ(stats.frames().size(), 2u);
+    const std::string s = stats.summary();
+    EXPECT_NE(s.find("2 frames in 0.6 s: 3.33 frames/s; draw ms p50 100.0"), std::string::npos)
+        << s;
+    EXPECT_NE(s.find("3 more shown again undrawn"), std::string::npos) << s;
+}
+
 TEST(FrameStats, CsvToAnUnwritablePlaceIsAnError) {
     FrameStats stats;
     stats.add({});
