@@ -126,6 +126,26 @@ TEST(RenderEnvironment, StudioIsDarkBelowWithBrightLightsAbove) {
               Environment::studio().radiance(direction(0.3, 0.9)));
 }
 
+TEST(RenderEnvironment, TheLightTentIsWhiteWithDarkFlagsWhereTheyStand) {
+    const Environment tent = Environment::light_tent();
+    // Azimuth from +z toward +x, elevation above the girdle plane (environment_tent.cpp's
+    // convention, the camera's).
+    const auto at = [&](double azimuth_deg, double elevation_deg) {
+        const double a = azimuth_deg * kPi / 180.0, e = elevation_deg * kPi / 180.0;
+        return tent.radiance({std::cos(e) * std::sin(a), std::sin(e), std::cos(e) * std::cos(a)});
+    };
+    // Inside the flags at 0° (±14°, -15° to 50°) and 60° (±10°, -10° to 35°).
+    EXPECT_LT(at(0.0, 20.0).x, 0.05);
+    EXPECT_LT(at(60.0, 10.0).x, 0.05);
+    EXPECT_LT(at(180.0 + 60.0, 20.0).x, 0.05);
+    // Between them, the wall (0.8); overhead, twice as bright; below the flags, the sweep.
+    EXPECT_NEAR(at(30.0, 10.0).x, 0.8, 0.02);
+    EXPECT_NEAR(at(0.0, 89.0).x, 1.6, 0.02);
+    EXPECT_GT(at(0.0, -60.0).x, 0.5);
+    // Grey: every channel alike.
+    EXPECT_EQ(at(30.0, 10.0).x, at(30.0, 10.0).z);
+}
+
 }  // namespace
 }  // namespace gem
 
