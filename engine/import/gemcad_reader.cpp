@@ -1,24 +1,33 @@
 // GemCad text designs (.asc): a faceting machine's settings, one tier of facets per "a" line.
 //
-//   GemCad 5.0            header and program version
-//   g 96 0.0              index gear (teeth) and reference angle
+//   GemCad 5.0            the program and its version (GemCad 4 writes "GemCad 4.x")
+//   g 96 0.0              index gear (signed teeth) and its offset (an index)
 //   y 8 y                 symmetry fold and mirror flag
 //   I 1.54                refractive index the design was optimised for
 //   H text / F text       header and footnote text
 //   a -42.5 0.618 93 n 1 87 81 ...   angle, distance, then indices with "n <name>" labels
 //
-// Conventions chosen here (the file format leaves them to the program):
-// - Azimuth of index i: φ = 2π·i/gear + reference angle (read as degrees), measured from +x
-//   toward +z, i.e. clockwise seen from above (from +y) in the right-handed stone frame.
+// The index gear, as GemCad's manual defines it (GemCad User's Manual 4.51, R. W. Strickland,
+// "Index gear (g)"): gears with a positive number of teeth number their indices counter-
+// clockwise in the Top View, negative ones clockwise; the offset is the index shown at the
+// bottom of the Top View (0: index 0 at the bottom; half the teeth: at the top). Some writers
+// leave out the "g" and start that line with the teeth.
+// Conventions chosen here for the stone frame (y up through the table):
+// - The Top View is the stone seen from +y with +z at the bottom of the picture (the camera's
+//   face-up view, render/camera.hpp: right +x, up -z). So index i lies at azimuth
+//   θ = sign(teeth)·2π·(i − offset)/|teeth|, measured from +z toward +x: counter-clockwise
+//   seen from above, as GemCad draws a positive gear.
 // - Angle a: inclination of the facet from the girdle plane; a > 0 crown, a < 0 pavilion,
-//   0 table, ±90 girdle. Outward normal n = (sin|a|·cos φ, ±cos a, sin|a|·sin φ), + on the
+//   0 table, ±90 girdle. Outward normal n = (sin|a|·sin θ, ±cos a, sin|a|·cos θ), + on the
 //   crown side; the facet plane is n·x = distance. A culet (horizontal pavilion facet) is
 //   written "-0" or as angle 0 with a negative distance.
 // - A name after "n" labels the index just before it and the indices after it, up to the next
 //   name; indices before the first name share it. A "G" token starts free-text cutting notes.
 // - Long tiers may continue on lines that start with an index, "n" or "G".
-// - Mirror symmetry maps index i to −i, i.e. reflects about the azimuth of index 0. Symmetry
+// - Mirror symmetry maps index i to −i (the machine's mirror), whatever the offset. Symmetry
 //   the facets do not actually have is dropped.
+// Read: the GemCad line, g, y, I, the first H (the design's name) and a. Passed over: further H
+// lines and F lines (text for the cutter). Anything else is an error naming the line.
 
 #include <cctype>
 #include <cmath>
@@ -46,8 +55,8 @@ struct Tier {
 };
 
 struct Design {
-    int gear = 96;
-    double reference_deg = 0.0;
+    int gear = 96;        // signed: negative gears number their indices clockwise
+    double offset = 0.0;  // the index at the bottom of the Top View
     int fold = 1;
     bool mirror = false;
     std::optional<Material> material;
@@ -99,6 +108,12 @@ class GemcadParser {
             tokens[0] = first.substr(1);
             tokens.insert(tokens.begin(), first.substr(0, 1));
         }
+        // The gear line without its letter: "96 0.0" before any tier.
+        if (!gear_seen_ && design_.tiers.empty() && tokens.size() <= 2 &&
+            import::parse_integer(tokens[0]) &&
+            (tokens.size() == 1 || import::parse_number(tokens[1]))) {
+            tokens.insert(tokens.begin(), "g");
+        }
         const std::string_view k = tokens[0];
         const std::string_view rest = line.substr(line.find(k) + k.size());
         const bool tier_was_open = tier_open_;
@@ -135,17 +150,23 @@ class GemcadParser {
     }
 
     std::optional<Error> parse_gear(const std::vector<std::string_view>& t) {
-        if (t.size() < 2) return error("gear line needs 'g <teeth> <reference angle>'");
+        if (t.size() < 2) return error("gear line needs 'g <teeth> <offset>'");
+        if (gear_seen_) return error("a second gear line");
         const auto teeth = import::parse_integer(t[1]);
-        if (!teeth || *teeth <= 0 || *teeth > 100000) {
-            return error("gear '" + std::string(t[1]) + "' is not a positive whole number");
+        if (!teeth || *teeth == 0 || *teeth > 100000 || *teeth < -100000) {
+            return error("gear '" + std::string(t[1]) +
+                         "' is not a whole number of teeth (1 to 100000, negative: clockwise)");
         }
         design_.gear = static_cast<int>(*teeth);
+        gear_seen_ = true;
         if (t.size() > 2) {
             Error e;
-            const auto ref = number(t[2], "gear reference angle", e);
-            if (!ref) return e;
-            design_.reference_deg = *ref;
+            const auto offset = number(t[2], "gear offset", e);
+            if (!offset) return e;
+            if (std::abs(*offset) > 100000.0) {
+                return error("gear offset " + std::string(t[2]) + " is not an index of the gear");
+            }
+            design_.offset = *offset;
         }
         return std::nullopt;
     }
@@ -226,6 +247,7 @@ class GemcadParser {
     std::size_t line_ = 1;
     Design design_;
     bool tier_open_ = false;  // the previous line was a tier or its continuation
+    bool gear_seen_ = false;
 };
 
 FacetKind kind_of(double angle_deg) {
@@ -234,16 +256,16 @@ FacetKind kind_of(double angle_deg) {
     return angle_deg > 0.0 ? FacetKind::crown : FacetKind::pavilion;
 }
 
-glm::dmat3 rotation_about_y(double phi) {
-    // Turns azimuth φ (from +x toward +z) into φ + phi; glm matrices are column-major.
-    const double c = std::cos(phi), s = std::sin(phi);
-    return glm::dmat3(glm::dvec3(c, 0.0, s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(-s, 0.0, c));
+glm::dmat3 rotation_about_y(double angle) {
+    // Turns azimuth θ (from +z toward +x) into θ + angle; glm matrices are column-major.
+    const double c = std::cos(angle), s = std::sin(angle);
+    return glm::dmat3(glm::dvec3(c, 0.0, -s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(s, 0.0, c));
 }
 
-glm::dmat3 mirror_about_azimuth(double phi0) {
-    // Reflects azimuth φ to 2·phi0 − φ, keeping y.
-    const double c = std::cos(2.0 * phi0), s = std::sin(2.0 * phi0);
-    return glm::dmat3(glm::dvec3(c, 0.0, s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(s, 0.0, -c));
+glm::dmat3 mirror_about_azimuth(double theta0) {
+    // Reflects azimuth θ to 2·θ0 − θ, keeping y: the reflection about (sin θ0, 0, cos θ0).
+    const double c = std::cos(2.0 * theta0), s = std::sin(2.0 * theta0);
+    return glm::dmat3(glm::dvec3(-c, 0.0, s), glm::dvec3(0.0, 1.0, 0.0), glm::dvec3(s, 0.0, c));
 }
 
 }  // namespace
@@ -251,12 +273,18 @@ glm::dmat3 mirror_about_azimuth(double phi0) {
 Result<Stone> load_gemcad(const std::filesystem::path& path) {
     auto bytes = import::read_whole_file(path);
     if (!bytes) return Error{bytes.error()};
-    if (bytes.value().empty()) return import::file_error(path, "empty file");
-    auto parsed = GemcadParser(path).parse(bytes.value());
+    return parse_gemcad(bytes.value(), path);
+}
+
+Result<Stone> parse_gemcad(std::string_view text, const std::filesystem::path& path) {
+    if (text.empty()) return import::file_error(path, "empty file");
+    auto parsed = GemcadParser(path).parse(text);
     if (!parsed) return Error{parsed.error()};
     const Design& design = parsed.value();
 
-    const double reference = design.reference_deg * std::numbers::pi / 180.0;
+    // Azimuth of index i, from +z toward +x (see the top of the file).
+    const double turn = (design.gear > 0 ? 2.0 : -2.0) * std::numbers::pi / std::abs(design.gear);
+    const auto azimuth = [&](double index) { return turn * (index - design.offset); };
     std::vector<FacetPlane> planes;
     for (const Tier& tier : design.tiers) {
         const FacetKind kind = kind_of(tier.angle_deg);
@@ -269,11 +297,10 @@ Result<Stone> load_gemcad(const std::filesystem::path& path) {
         const std::size_t count =
             (kind == FacetKind::table || kind == FacetKind::culet) ? 1 : tier.indices.size();
         for (std::size_t i = 0; i < count; ++i) {
-            const double index = tier.indices.empty() ? 0.0 : tier.indices[i];
-            const double phi = 2.0 * std::numbers::pi * index / design.gear + reference;
+            const double theta = azimuth(tier.indices.empty() ? 0.0 : tier.indices[i]);
             FacetPlane fp;
             fp.plane.n = glm::normalize(
-                glm::dvec3(std::sin(a) * std::cos(phi), up, std::sin(a) * std::sin(phi)));
+                glm::dvec3(std::sin(a) * std::sin(theta), up, std::sin(a) * std::cos(theta)));
             fp.plane.d = tier.distance;
             fp.kind = kind;
             fp.name = tier.names.empty() ? std::string() : tier.names[i];
@@ -290,7 +317,7 @@ Result<Stone> load_gemcad(const std::filesystem::path& path) {
         s.symmetry.push_back(rotation_about_y(2.0 * std::numbers::pi * k / design.fold));
     }
     if (design.mirror) {
-        const glm::dmat3 m = mirror_about_azimuth(reference);
+        const glm::dmat3 m = mirror_about_azimuth(azimuth(0.0));
         for (int k = 0; k < design.fold; ++k) s.symmetry.push_back(s.symmetry[std::size_t(k)] * m);
     }
     // Some designs claim more symmetry than their facets have (a tilted table, one odd

@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <optional>
+#include <string_view>
 
 #include "geometry/stone.hpp"
 #include "util/result.hpp"
@@ -30,5 +31,7 @@ Result<Stone> load_obj(const std::filesystem::path& path);
 Result<Stone> load_stl(const std::filesystem::path& path);
 Result<Stone> load_3ds_ascii(const std::filesystem::path& path);
 Result<Stone> load_gemcad(const std::filesystem::path& path);  // material from its "I" line
+// The same from text already in memory; `path` names it in errors (the fuzz target's entry).
+Result<Stone> parse_gemcad(std::string_view text, const std::filesystem::path& path);
 
 }  // namespace gem

@@ -2,8 +2,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/stat.h>
-#include <sys/sysmacros.h>
 #include <unistd.h>
 
 #include <cerrno>
@@ -17,6 +15,7 @@ extern "C" {
 #include <libseat.h>
 }
 
+#include "service/device_presence.hpp"
 #include "service/log.hpp"
 
 namespace gem::kiosk {
@@ -24,27 +23,21 @@ namespace {
 
 // Set while closing a device that is already unplugged, whose errors are expected.
 bool closing_unplugged_device = false;
+// The node being opened: when it turns out to be unplugged, its errors are expected too.
+const std::string* opening_path = nullptr;
 
 // libseat's own messages go to our log, one line each, under our priorities.
 void log_from_libseat(enum libseat_log_level level, const char* format, va_list args) {
     char text[512];
     std::vsnprintf(text, sizeof text, format, args);
     const std::string message = std::string("libseat: ") + text;
-    if (level == LIBSEAT_LOG_LEVEL_ERROR && !closing_unplugged_device) {
+    const bool unplugged =
+        closing_unplugged_device || (opening_path != nullptr && !device_present(*opening_path));
+    if (level == LIBSEAT_LOG_LEVEL_ERROR && !unplugged) {
         log_warning(message);
     } else {
         log_debug(message);
     }
-}
-
-// Whether the character device behind `fd` still exists: its /sys/dev/char entry goes when the
-// kernel removes the device, before udev removes the node in /dev.
-bool device_present(int fd) {
-    struct stat status {};
-    if (::fstat(fd, &status) != 0 || !S_ISCHR(status.st_mode)) return true;
-    const std::string entry = "/sys/dev/char/" + std::to_string(major(status.st_rdev)) + ":" +
-                              std::to_string(minor(status.st_rdev));
-    return ::access(entry.c_str(), F_OK) == 0;
 }
 
 // How long open() waits for the seat's first enable event (seatd and logind answer within
@@ -91,7 +84,9 @@ int Seat::open(const std::string& path) {
         return ::open(path.c_str(), O_RDWR | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
     }
     int fd = -1;
+    opening_path = &path;
     const int device_id = libseat_open_device(seat_, path.c_str(), &fd);
+    opening_path = nullptr;
     if (device_id < 0 || fd < 0) return -1;
     // libseat hands the descriptor over as the backend opened it; the event loop needs it
     // non-blocking.

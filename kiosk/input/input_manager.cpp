@@ -10,6 +10,7 @@
 #include <cstring>
 #include <filesystem>
 
+#include "service/device_presence.hpp"
 #include "service/log.hpp"
 
 namespace gem::kiosk {
@@ -96,6 +97,12 @@ void InputManager::add_device(const std::string& path, bool quiet) {
     if (devices_.count(path) != 0 || ignored_.count(path) != 0) return;
     const int fd = open_(path);
     if (fd < 0) {
+        // A device unplugged as it was plugged in (udev's last change to a node can reach us
+        // after the kernel has dropped the device) is no fault.
+        if (!device_present(path)) {
+            log_debug("input device " + path + ": gone before it could be opened");
+            return;
+        }
         if (!quiet && failed_.insert(path).second)
             log_warning("input device " + path + ": cannot open: " + error_text(-fd));
         return;

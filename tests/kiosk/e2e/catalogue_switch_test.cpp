@@ -73,7 +73,8 @@ TEST(KioskCatalogue, NewCatalogueIsShownAndADamagedOneIsRefused) {
     ASSERT_FALSE(after.pixels.empty()) << kiosk.log();
     auto diamond_ref = reference_picture(diamond.value(), kiosk::kStartView);
     auto sapphire_ref = reference_picture(sapphire.value(), kiosk::kStartView);
-    ASSERT_TRUE(diamond_ref.ok() && sapphire_ref.ok());
+    ASSERT_TRUE(diamond_ref.ok()) << diamond_ref.error();
+    ASSERT_TRUE(sapphire_ref.ok()) << sapphire_ref.error();
     const double as_diamond = psnr_srgb8(after, diamond_ref.value());
     const double as_sapphire = psnr_srgb8(after, sapphire_ref.value());
     std::printf("after the damaged catalogue: %.1f dB to the diamond, %.1f dB to the sapphire\n",

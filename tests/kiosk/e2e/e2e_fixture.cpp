@@ -1,5 +1,7 @@
 #include "e2e_fixture.hpp"
 
+#include <unistd.h>
+
 #include <GLES3/gl3.h>
 
 #include <cmath>
@@ -173,7 +175,8 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     auto validated = kiosk::validate_catalogue(catalogue);
     if (!validated) return Error{validated.error()};
     // The same presets the kiosk reads from write_config's file, parsed the same way.
-    const fs::path config_dir = fresh_dir("reference-config");
+    // Per process: tests running at once each draw their own references.
+    const fs::path config_dir = fresh_dir("reference-config-" + std::to_string(::getpid()));
     const kiosk::ConfigLoad config = kiosk::load_config(write_config(config_dir, catalogue));
     if (!config.errors.empty()) return Error{"test config: " + config.errors.front()};
     kiosk::SceneSelection selection(config.config.backgrounds, config.config.lightings);

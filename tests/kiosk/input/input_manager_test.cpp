@@ -165,6 +165,25 @@ TEST_F(InputManagerTest, PermissionFixedLaterIsRetriedOnAttrib) {
     EXPECT_TRUE(mentions(lines[0], "not an evdev device")) << lines[0];
 }
 
+TEST_F(InputManagerTest, ANodeUnpluggedAsItIsOpenedIsNotAFault) {
+    // udev's last change to a node can arrive after the device is gone: the open fails
+    // because the device went, which is the unplugging, not a fault to warn about.
+    StderrCapture capture;
+    bool unplug_on_open = false;
+    InputManager manager(options(), [&](const std::string& p) {
+        if (!unplug_on_open) return -EACCES;
+        std::filesystem::remove(p);
+        return -ENODEV;
+    });
+    create("event4");
+    manager.dispatch(0.0);
+    unplug_on_open = true;
+    ASSERT_EQ(::chmod(path("event4").c_str(), 0660), 0);
+    manager.dispatch(0.0);
+    EXPECT_TRUE(capture.lines().empty()) << capture.lines().front();
+    EXPECT_TRUE(manager.open_devices().empty());
+}
+
 TEST_F(InputManagerTest, ExistingNodesAreScannedAtStart) {
     create("event1");
     create("event2");
