@@ -175,142 +175,139 @@ TEST(ImportGemcad, BadGearLinesNameTheLineAndTheField) {
         const char* gear;
         const char* message;
     };
-    for (const Case& c : {
-        Case{"g 0 0.0", "square_step_gear.asc:2: gear '0' is not a whole number"},
-            Case{"g 96x 0.0", "gear '96x' is not a whole number"},
-            Case{"g 96 west", "gear offset 'west' is not a number"},
-            Case{"g 96 1e9", "gear offset 1e9 is not an index of the gear"}, Case {
-            "g 96 0
-                g 64 0 ", " square_step_gear.asc : 3 : a second gear line "}}) {
-                                                       std::string bad = text;
-            bad.replace(bad.find("g 96 0.0"), 8, c.gear);
-            auto result = load_gemcad(write_artifact("square_step_gear.asc", bad));
-            ASSERT_FALSE(result.ok()) << c.gear;
-            EXPECT_TRUE(contains(result.error(), c.message)) << result.error();
-        }
+    const Case cases[] = {
+        {"g 0 0.0", "square_step_gear.asc:2: gear '0' is not a whole number"},
+        {"g 96x 0.0", "gear '96x' is not a whole number"},
+        {"g 96 west", "gear offset 'west' is not a number"},
+        {"g 96 1e9", "gear offset 1e9 is not an index of the gear"},
+        {"g 96 0\ng 64 0", "square_step_gear.asc:3: a second gear line"},
+    };
+    for (const Case& c : cases) {
+        std::string bad = text;
+        bad.replace(bad.find("g 96 0.0"), 8, c.gear);
+        auto result = load_gemcad(write_artifact("square_step_gear.asc", bad));
+        ASSERT_FALSE(result.ok()) << c.gear;
+        EXPECT_TRUE(contains(result.error(), c.message)) << result.error();
+    }
 }
 
 TEST(ImportGemcad, ClaimedSymmetryTheFacetsLackIsDropped) {
-        // "y 4 y" claims 8 symmetries, but with a single crown facet at index 0 (azimuth 0, normal
-        // in the yz plane) only the identity and the mirror x -> -x still map the stone onto
-        // itself.
-        std::string text = read_text(model("square_step.asc"));
-        text.replace(text.find("0.919238815542512 0 n C 24 48 72"), 32, "0.919238815542512 0 n C");
-        auto result = load_gemcad(write_artifact("one_crown_facet_symmetric.asc", text));
-        ASSERT_TRUE(result.ok()) << result.error();
-        const auto& g = result.value().symmetry;
-        ASSERT_EQ(g.size(), 2u);
-        EXPECT_EQ(g[0], glm::dmat3(1.0));
-        const glm::dvec3 p = g[1] * glm::dvec3(0.3, 0.2, 0.5);
-        EXPECT_NEAR(p.x, -0.3, 1e-12);
-        EXPECT_NEAR(p.y, 0.2, 1e-12);
-        EXPECT_NEAR(p.z, 0.5, 1e-12);
-        EXPECT_TRUE(symmetry_holds(result.value()));
+    // "y 4 y" claims 8 symmetries, but with a single crown facet at index 0 (azimuth 0, normal
+    // in the yz plane) only the identity and the mirror x -> -x still map the stone onto
+    // itself.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("0.919238815542512 0 n C 24 48 72"), 32, "0.919238815542512 0 n C");
+    auto result = load_gemcad(write_artifact("one_crown_facet_symmetric.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    const auto& g = result.value().symmetry;
+    ASSERT_EQ(g.size(), 2u);
+    EXPECT_EQ(g[0], glm::dmat3(1.0));
+    const glm::dvec3 p = g[1] * glm::dvec3(0.3, 0.2, 0.5);
+    EXPECT_NEAR(p.x, -0.3, 1e-12);
+    EXPECT_NEAR(p.y, 0.2, 1e-12);
+    EXPECT_NEAR(p.z, 0.5, 1e-12);
+    EXPECT_TRUE(symmetry_holds(result.value()));
 }
 
 TEST(ImportGemcad, AnOffsetTurnsTheDesign) {
-        // An offset of 12 of 96 turns the square by 45°: its girdle's corners lie on the axes,
-        // √2 out.
-        std::string text = read_text(model("square_step.asc"));
-        text.replace(text.find("g 96 0.0"), 8, "g 96 12.0");
-        auto result = load_gemcad(write_artifact("turned_square_step.asc", text));
-        ASSERT_TRUE(result.ok()) << result.error();
-        double max_x = 0.0;
-        for (const auto& v : result.value().vertices) max_x = std::max(max_x, v.x);
-        EXPECT_NEAR(max_x, std::sqrt(2.0), 1e-12);
-        EXPECT_TRUE(symmetry_holds(result.value()));  // the mirror turns with the design
+    // An offset of 12 of 96 turns the square by 45°: its girdle's corners lie on the axes,
+    // √2 out.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("g 96 0.0"), 8, "g 96 12.0");
+    auto result = load_gemcad(write_artifact("turned_square_step.asc", text));
+    ASSERT_TRUE(result.ok()) << result.error();
+    double max_x = 0.0;
+    for (const auto& v : result.value().vertices) max_x = std::max(max_x, v.x);
+    EXPECT_NEAR(max_x, std::sqrt(2.0), 1e-12);
+    EXPECT_TRUE(symmetry_holds(result.value()));  // the mirror turns with the design
 }
 
 TEST(ImportGemcad, StandardRoundBrilliantFromTheUsersGuide) {
-        auto result = load_gemcad(srb());
-        ASSERT_TRUE(result.ok()) << result.error();
-        const Stone& s = result.value();
-        EXPECT_EQ(s.name, "Standard Round Brilliant");
-        EXPECT_EQ(gemmological_facet_count(s), 57);
-        EXPECT_EQ(count_kind(s, FacetKind::table) + count_kind(s, FacetKind::crown), 33);
-        EXPECT_EQ(count_kind(s, FacetKind::pavilion) + count_kind(s, FacetKind::culet), 24);
-        EXPECT_EQ(count_kind(s, FacetKind::girdle), 16);
-        EXPECT_EQ(s.symmetry.size(), 16u);
-        EXPECT_TRUE(symmetry_holds(s));
-        EXPECT_DOUBLE_EQ(s.material.index(), 1.54);
-        EXPECT_TRUE(s.convex);
-        const SolidReport r = check_solid(s);
-        EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
+    auto result = load_gemcad(srb());
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Stone& s = result.value();
+    EXPECT_EQ(s.name, "Standard Round Brilliant");
+    EXPECT_EQ(gemmological_facet_count(s), 57);
+    EXPECT_EQ(count_kind(s, FacetKind::table) + count_kind(s, FacetKind::crown), 33);
+    EXPECT_EQ(count_kind(s, FacetKind::pavilion) + count_kind(s, FacetKind::culet), 24);
+    EXPECT_EQ(count_kind(s, FacetKind::girdle), 16);
+    EXPECT_EQ(s.symmetry.size(), 16u);
+    EXPECT_TRUE(symmetry_holds(s));
+    EXPECT_DOUBLE_EQ(s.material.index(), 1.54);
+    EXPECT_TRUE(s.convex);
+    const SolidReport r = check_solid(s);
+    EXPECT_TRUE(r.valid()) << (r.problems.empty() ? "" : r.problems.front());
 
-        // Heights from the tier lines by hand. A crown or pavilion facet at the same index as a
-        // girdle facet meets it in a horizontal edge where sin|a|·r ± cos a·y = d, r = 1.02653281:
-        const double r_girdle = 1.02653281;
-        const double girdle_top =
-            (0.68444470 - std::sin(34 * kDeg) * r_girdle) / std::cos(34 * kDeg);
-        const double girdle_bottom =
-            (std::sin(42.5 * kDeg) * r_girdle - 0.61819401) / std::cos(42.5 * kDeg);
-        const double table = 0.36450932;
-        const double culet =
-            -0.61701256 / std::cos(41.5 * kDeg);  // the eight mains meet on the axis
-        double y_lo = 1e9, y_hi = -1e9, g_lo = 1e9, g_hi = -1e9;
-        for (const auto& v : s.vertices) {
-            y_lo = std::min(y_lo, v.y);
-            y_hi = std::max(y_hi, v.y);
+    // Heights from the tier lines by hand. A crown or pavilion facet at the same index as a
+    // girdle facet meets it in a horizontal edge where sin|a|·r ± cos a·y = d, r = 1.02653281:
+    const double r_girdle = 1.02653281;
+    const double girdle_top = (0.68444470 - std::sin(34 * kDeg) * r_girdle) / std::cos(34 * kDeg);
+    const double girdle_bottom =
+        (std::sin(42.5 * kDeg) * r_girdle - 0.61819401) / std::cos(42.5 * kDeg);
+    const double table = 0.36450932;
+    const double culet = -0.61701256 / std::cos(41.5 * kDeg);  // the eight mains meet on the axis
+    double y_lo = 1e9, y_hi = -1e9, g_lo = 1e9, g_hi = -1e9;
+    for (const auto& v : s.vertices) {
+        y_lo = std::min(y_lo, v.y);
+        y_hi = std::max(y_hi, v.y);
+    }
+    for (const Facet& f : s.facets) {
+        if (f.kind != FacetKind::girdle) continue;
+        for (std::uint32_t i : f.loop) {
+            g_lo = std::min(g_lo, s.vertices[i].y);
+            g_hi = std::max(g_hi, s.vertices[i].y);
         }
-        for (const Facet& f : s.facets) {
-            if (f.kind != FacetKind::girdle) continue;
-            for (std::uint32_t i : f.loop) {
-                g_lo = std::min(g_lo, s.vertices[i].y);
-                g_hi = std::max(g_hi, s.vertices[i].y);
-            }
-        }
-        EXPECT_NEAR(y_hi, table, 1e-9);
-        EXPECT_NEAR(y_lo, culet, 1e-9);
-        EXPECT_NEAR(g_hi, girdle_top, 1e-9);
-        EXPECT_NEAR(g_lo, girdle_bottom, 1e-9);
+    }
+    EXPECT_NEAR(y_hi, table, 1e-9);
+    EXPECT_NEAR(y_lo, culet, 1e-9);
+    EXPECT_NEAR(g_hi, girdle_top, 1e-9);
+    EXPECT_NEAR(g_lo, girdle_bottom, 1e-9);
 }
 
 TEST(ImportGemcad, UnknownLineNamesFileAndLine) {
-        auto result = load_gemcad(model("bad/unknown_line.asc"));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(contains(result.error(), "unknown_line.asc:5: unknown line 'x'"))
-            << result.error();
+    auto result = load_gemcad(model("bad/unknown_line.asc"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "unknown_line.asc:5: unknown line 'x'")) << result.error();
 }
 
 TEST(ImportGemcad, IndicesAfterAFootnoteDoNotContinueATier) {
-        // The fixture has 14 lines; the stray indices are line 15.
-        const std::string text = read_text(model("square_step.asc")) + "12 24\n";
-        auto result = load_gemcad(write_artifact("stray_indices.asc", text));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(contains(result.error(), "stray_indices.asc:15: unknown line '12'"))
-            << result.error();
+    // The fixture has 14 lines; the stray indices are line 15.
+    const std::string text = read_text(model("square_step.asc")) + "12 24\n";
+    auto result = load_gemcad(write_artifact("stray_indices.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "stray_indices.asc:15: unknown line '12'"))
+        << result.error();
 }
 
 TEST(ImportGemcad, MalformedAngleNamesLineAndToken) {
-        auto result = load_gemcad(model("bad/bad_angle.asc"));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(contains(result.error(), "bad_angle.asc:7: tier angle '4x.0' is not a number"))
-            << result.error();
+    auto result = load_gemcad(model("bad/bad_angle.asc"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "bad_angle.asc:7: tier angle '4x.0' is not a number"))
+        << result.error();
 }
 
 TEST(ImportGemcad, MalformedIndexNamesLineAndToken) {
-        std::string text = read_text(model("square_step.asc"));
-        text.replace(text.find("0 n C 24 48 72"), 14, "0 n C 24 4B 72");
-        auto result = load_gemcad(write_artifact("bad_index_token.asc", text));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(
-            contains(result.error(), "bad_index_token.asc:9: tier index '4B' is not a number"))
-            << result.error();
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("0 n C 24 48 72"), 14, "0 n C 24 4B 72");
+    auto result = load_gemcad(write_artifact("bad_index_token.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "bad_index_token.asc:9: tier index '4B' is not a number"))
+        << result.error();
 }
 
 TEST(ImportGemcad, NotAGemcadFileIsAnErrorOnLineOne) {
-        auto result = load_gemcad(model("cube.obj"));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(contains(result.error(), "cube.obj:1: not a GemCad design")) << result.error();
+    auto result = load_gemcad(model("cube.obj"));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "cube.obj:1: not a GemCad design")) << result.error();
 }
 
 TEST(ImportGemcad, FacetThatVanishesIsAnErrorNamingTheFile) {
-        // A table above the crown's apex (y = 1.3) cuts nothing away.
-        std::string text = read_text(model("square_step.asc"));
-        text.replace(text.find("a 0.000000 0.70000000"), 21, "a 0.000000 1.50000000");
-        auto result = load_gemcad(write_artifact("vanishing_table.asc", text));
-        ASSERT_FALSE(result.ok());
-        EXPECT_TRUE(contains(result.error(), "vanishing_table.asc: ")) << result.error();
+    // A table above the crown's apex (y = 1.3) cuts nothing away.
+    std::string text = read_text(model("square_step.asc"));
+    text.replace(text.find("a 0.000000 0.70000000"), 21, "a 0.000000 1.50000000");
+    auto result = load_gemcad(write_artifact("vanishing_table.asc", text));
+    ASSERT_FALSE(result.ok());
+    EXPECT_TRUE(contains(result.error(), "vanishing_table.asc: ")) << result.error();
 }
 
 }  // namespace
