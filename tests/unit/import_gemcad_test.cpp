@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
@@ -98,7 +99,10 @@ glm::dvec3 one_crown_facet(const std::string& gear, const std::string& index) {
     text.replace(text.find("g 96 0.0"), 8, gear);
     text.replace(text.find("0.919238815542512 0 n C 24 48 72"), 32,
                  "0.919238815542512 " + index + " n C");
-    auto result = load_gemcad(write_artifact("one_crown_facet.asc", text));
+    // A file of its own per variant: CTest runs these tests at once.
+    std::string name = "one_crown_facet " + gear + " at " + index + ".asc";
+    std::replace(name.begin(), name.end(), ' ', '_');
+    auto result = load_gemcad(write_artifact(name, text));
     EXPECT_TRUE(result.ok()) << result.error();
     if (!result.ok()) return glm::dvec3(0.0);
     EXPECT_EQ(result.value().symmetry.size(), 1u);
