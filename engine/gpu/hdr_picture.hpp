@@ -54,6 +54,8 @@ class HdrPicture {
     glm::dvec2 jitter_ndc() const;
     // The still view has its still_frames frames: drawing it again changes nothing.
     bool settled() const;
+    // The picture is as good as this view gets: settled, or no averaging at all.
+    bool refined() const { return !accumulate_ || settled(); }
     // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture.
     void bind() const;
     // The scene into `picture` (the same size). `times`: measure each pass (stalls the GPU).

@@ -95,6 +95,7 @@ Result<bool> KioskSession::configure() {
         log_info("catalogue '" + startup.value().name + "' with " +
                  std::to_string(startup.value().stones.size()) + " stones from " +
                  startup.value().directory.string());
+        for (const std::string& why : startup.value().left_out) log_error(why);
         selection_->set_catalogue(startup.value());
         catalogue_ = std::move(startup).value();
     } else {
@@ -250,6 +251,7 @@ void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
     log_notice("showing catalogue '" + catalogue.name + "' (" +
                std::to_string(catalogue.stones.size()) + " stones) from " +
                catalogue.directory.string());
+    for (const std::string& why : catalogue.left_out) log_error(why);
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
     }
@@ -316,6 +318,16 @@ void KioskSession::choose_render_method() {
     // (10 s) would not survive a probe on a slow GPU.
     const glm::ivec2 size = display_->picture_size();
     if (probed_size_ == size) return;
+    if (!selection_->stone().opened && !selection_->stone().design.empty()) {
+        // A design has no tables to choose between: it is drawn by the trace. The session's
+        // choice is made now all the same (never once frames are on screen), for stones with
+        // tables that come later: trace, the most accurate.
+        probed_size_ = size;
+        render_ = apply_candidate(render_, method_ladder(0, false).front());
+        log_info("render.method auto: stone '" + selection_->stone().name +
+                 "' is a design without tables, drawn by trace; stones with tables will be too");
+        return;
+    }
     if (probed_size_ && first_frame_shown_) {
         log_info("render.method auto: keeping the choice measured at " +
                  std::to_string(probed_size_->x) + "x" + std::to_string(probed_size_->y));
@@ -533,7 +545,10 @@ bool KioskSession::replay_settled(double now_s) const {
     // The last event is long enough ago for a fling's spin to have died away (eight half-lives
     // leave under 0.4 %), and a frame has been drawn since.
     const double rest_s = 8.0 * config_.gestures.inertia_half_life_s;
-    return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s;
+    // ... and the still view has all its averaged frames, so the last picture is the settled
+    // one whatever the machine's speed.
+    return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s &&
+           scene_picture_ && scene_picture_->refined();
 }
 
 void KioskSession::finish() {

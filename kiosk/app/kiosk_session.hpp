@@ -49,7 +49,7 @@ class KioskSession {
     void rescan_catalogues();
     void request_snapshot() { snapshot_requested_ = true; }
     double seconds_running(double now_s) const { return now_s - started_s_; }
-    // The replay has played every event and the view has come to rest.
+    // The replay has played every event, the view has come to rest and its picture is refined.
     bool replay_settled(double now_s) const;
     // Leaves the screen as it found it and tells systemd the kiosk is stopping.
     void finish();

@@ -90,6 +90,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
     std::vector<MethodCandidate> ladder = method_ladder(0);
     auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
     if (!first) return Error{first.error()};
+    if (!first.value()->has_database()) return Error{"stone '" + stone.name + "' has no tables"};
     int needed_level = 0;
     const Database& db = first.value()->database();
     auto camera = probe_camera(*first.value(), start, 0.0, target);

@@ -32,6 +32,11 @@ Result<Environment> make_environment(const LookChoice& look) {
     return environment.with_intensity(look.environment_intensity);
 }
 
+// Whether the material's index changes with wavelength: a design shows fire where it does.
+bool dispersive(const Material& material) {
+    return material.dispersion.kind != Dispersion::Kind::constant;
+}
+
 Result<gpu::RingMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
     if (stone.ring == RingKind::obj && stone.ring_mesh) return *stone.ring_mesh;
     if (stone.ring == RingKind::obj) {
@@ -50,37 +55,44 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     auto fail = [&](const std::string& why) { return Error{"stone '" + stone.name + "': " + why}; };
     std::unique_ptr<StoneScene> scene(new StoneScene());
     scene->name_ = stone.name;
-    // Validation mapped and checked the database; a stone without one (a test's hand-made
-    // catalogue) is opened here.
+    // Validation mapped and checked the database, or built the design's stone; a stone with
+    // neither (a test's hand-made catalogue) has its database opened here.
     scene->database_ = stone.opened;
-    if (!scene->database_) {
+    scene->designed_ = stone.designed;
+    if (!scene->database_ && !scene->designed_) {
         auto database = Database::open(stone.database);
         if (!database) return fail(database.error());
         scene->database_ = std::make_shared<const Database>(std::move(database).value());
     }
     const double to_deg = 180.0 / std::numbers::pi;
-    scene->min_elevation_deg_ = scene->database_->params().grid.min_elevation_rad * to_deg;
+    // A design has no tables, so no band of stored views: any elevation is exact.
+    scene->min_elevation_deg_ =
+        scene->database_ ? scene->database_->params().grid.min_elevation_rad * to_deg : -90.0;
     scene->max_elevation_deg_ = 90.0;
+    const Stone& geometry = scene->stone();
 
     auto environment = make_environment(look);
     if (!environment) return fail(environment.error());
     scene->environment_ = std::move(environment).value();
 
     gpu::FrameSetup setup;
-    setup.method = render.method;
+    // A design is drawn by the exact trace, which needs no tables.
+    setup.method = scene->database_ ? render.method : gpu::Method::trace;
     setup.database = scene->database_;
-    setup.stone = scene->database_->stone();
-    setup.material = scene->database_->material();
+    setup.stone = geometry;
+    setup.material = scene->database_ ? scene->database_->material() : geometry.material;
     if (stone.colour) setup.material.body_colour = *stone.colour;
     if (stone.absorption_per_mm) setup.material.absorption_per_mm = *stone.absorption_per_mm;
     setup.shading.lights = look.lights;
     // The phong baseline draws the stone with opacity 1 − α; the physical model's α = 1 would
     // leave only the ring on screen. 0.8 is the scene default gemrender uses (scene/scene.hpp).
-    if (render.method == gpu::Method::phong) setup.shading.alpha = Scene{}.alpha;
+    if (setup.method == gpu::Method::phong) setup.shading.alpha = Scene{}.alpha;
     setup.trace.max_depth = render.depth;
     // Fire where the database stores it: each colour channel traced at its own index, or as
     // the tables show it, each exit's channels moved by their direction's derivative.
-    if (scene->database_->params().dispersion) {
+    const bool fire =
+        scene->database_ ? scene->database_->params().dispersion : dispersive(geometry.material);
+    if (fire) {
         setup.trace_dispersion =
             render.exact_fire ? gpu::TraceDispersion::exact : gpu::TraceDispersion::first_order;
     }
@@ -95,7 +107,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
         setup.background_colour = glm::vec3(look.colour * look.background_intensity);
     }
     if (stone.ring != RingKind::none) {
-        auto ring = make_ring(stone, scene->database_->stone());
+        auto ring = make_ring(stone, geometry);
         if (!ring) return fail(ring.error());
         scene->ring_ = std::move(ring).value();
         setup.ring = &scene->ring_;
@@ -109,7 +121,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
 
 const Framing& StoneScene::framing(glm::ivec2 size) const {
     if (size == framed_size_) return framing_;
-    const std::vector<glm::dvec3>& stone = database_->stone().vertices;
+    const std::vector<glm::dvec3>& stone = this->stone().vertices;
     std::vector<glm::dvec3> ring(ring_.positions.begin(), ring_.positions.end());
     framing_ =
         frame_ring(stone, ring, kStartView, size, renderer_->scene_radius_mm(), stone_share_);

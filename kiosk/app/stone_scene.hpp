@@ -57,7 +57,10 @@ class StoneScene {
                                                     const RenderChoice& render);
 
     gpu::FrameRenderer& renderer() { return renderer_.value(); }
+    // The stone's tables; a design (CatalogueStone::design) has none.
+    bool has_database() const { return database_ != nullptr; }
     const Database& database() const { return *database_; }
+    const Stone& stone() const { return database_ ? database_->stone() : *designed_; }
     const std::string& name() const { return name_; }
     // The camera for `view` in a picture of `size`, framed as framing.hpp says at the start
     // view (start_view.hpp); view.zoom scales that framing. `jitter_ndc`: a sub-pixel offset of
@@ -75,6 +78,7 @@ class StoneScene {
     StoneScene() = default;
     std::string name_;
     std::shared_ptr<const Database> database_;
+    std::shared_ptr<const Stone> designed_;
     Environment environment_ = Environment::studio();
     gpu::RingMesh ring_;
     std::optional<gpu::FrameRenderer> renderer_;

@@ -44,6 +44,10 @@ struct CatalogueStone {
     std::string name;                        // shown to staff in logs
     std::filesystem::path database;          // absolute, inside the catalogue directory
     std::shared_ptr<const Database> opened;  // the mapping validation checked
+    // Instead of a database: a stone description (a .toml as in config/stones/: a cut, or a
+    // model file, and a material), drawn by the exact trace, which needs no tables.
+    std::filesystem::path design;           // absolute, inside the catalogue directory
+    std::shared_ptr<const Stone> designed;  // the stone validation built from it
     RingKind ring = RingKind::parametric;
     std::filesystem::path ring_obj;                  // RingKind::obj: absolute path
     std::shared_ptr<const gpu::RingMesh> ring_mesh;  // RingKind::obj: the mesh loaded
@@ -60,6 +64,9 @@ struct Catalogue {
     std::string name;
     std::filesystem::path directory;  // canonical: an installed copy, never the symlink
     std::vector<CatalogueStone> stones;
+    // Stones validation left out (a design that cannot be read), one message each; the rest
+    // of the catalogue is shown.
+    std::vector<std::string> left_out;
 };
 
 }  // namespace gem::kiosk

@@ -98,6 +98,8 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
             e = read_string(node, full, stone.name);
         } else if (k == "database") {
             e = read_inner_path(node, full, dir, stone.database);
+        } else if (k == "design") {
+            e = read_inner_path(node, full, dir, stone.design);
         } else if (k == "ring") {
             std::string text;
             e = read_string(node, full, text);
@@ -133,7 +135,11 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
         if (e) return e;
     }
     if (stone.name.empty()) return error_at(line, "stone.name", "missing");
-    if (stone.database.empty()) return error_at(line, "stone.database", "missing");
+    if (stone.database.empty() == stone.design.empty()) {
+        return error_at(line, stone.database.empty() ? "stone.database" : "stone.design",
+                        stone.database.empty() ? "missing (or a stone.design)"
+                                               : "and stone.database both given: one of them");
+    }
     return std::nullopt;
 }
 

@@ -6,7 +6,10 @@
 //
 //   [[stone]]                            # one or more
 //   name = "Blue oval sapphire"          # required, unique; shown to staff in logs
-//   database = "stones/sapphire.gemdb"   # required, relative to the directory
+//   database = "stones/sapphire.gemdb"   # relative to the directory; or, instead:
+//   design = "stones/sapphire.toml"      # a stone description as in config/stones/ (a cut or
+//                                        # a model file, and a material): drawn by the exact
+//                                        # trace, no tables needed
 //   ring = "parametric"                  # "parametric" (default) | "none" | "rings/x.obj"
 //   metal = "white_gold"                 # yellow_gold (default) | white_gold | platinum | silver
 //   colour = [0.1, 0.2, 0.7]             # optional: stone colour I_o, linear RGB 0..1

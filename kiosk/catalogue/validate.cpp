@@ -4,6 +4,7 @@
 
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
+#include "stone_file.hpp"
 
 namespace gem::kiosk {
 
@@ -38,21 +39,37 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
     if (!manifest) return reject(manifest.error());
     Catalogue catalogue = std::move(manifest).value();
     label = catalogue.name;
+    std::vector<CatalogueStone> kept;
     for (CatalogueStone& stone : catalogue.stones) {
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
-        Result<Database> opened = Database::open(stone.database);
-        if (!opened) return reject(relative_message(opened.error(), stone.database, real));
-        if (auto damaged = find_damaged_payload(opened.value())) {
-            return reject(stone.database.lexically_relative(real).string() + ": " + *damaged);
+        if (!stone.design.empty()) {
+            // A design that cannot be read leaves its stone out, not the catalogue.
+            Result<Stone> designed = tables::load_stone_file(stone.design);
+            if (!designed) {
+                catalogue.left_out.push_back(
+                    "stone '" + stone.name +
+                    "' left out: " + relative_message(designed.error(), stone.design, real));
+                continue;
+            }
+            stone.designed = std::make_shared<const Stone>(std::move(designed).value());
+        } else {
+            Result<Database> opened = Database::open(stone.database);
+            if (!opened) return reject(relative_message(opened.error(), stone.database, real));
+            if (auto damaged = find_damaged_payload(opened.value())) {
+                return reject(stone.database.lexically_relative(real).string() + ": " + *damaged);
+            }
+            stone.opened = std::make_shared<const Database>(std::move(opened).value());
         }
-        stone.opened = std::make_shared<const Database>(std::move(opened).value());
         if (stone.ring == RingKind::obj) {
             Result<gpu::RingMesh> mesh =
                 gpu::load_ring_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
             if (!mesh) return reject(relative_message(mesh.error(), stone.ring_obj, real));
             stone.ring_mesh = std::make_shared<const gpu::RingMesh>(std::move(mesh).value());
         }
+        kept.push_back(std::move(stone));
     }
+    if (kept.empty()) return reject(catalogue.left_out.front());
+    catalogue.stones = std::move(kept);
     return catalogue;
 }
 

@@ -89,7 +89,12 @@ TEST(CatalogueManifest, ErrorsNameFileLineAndKey) {
                  "catalogue.toml:6: stone.ring: 'gold band' is not parametric, none or a .obj "
                  "file");
     expect_error("no-database", head + "metal = \"silver\"\n",
-                 "catalogue.toml:3: stone.database: missing");
+                 "catalogue.toml:3: stone.database: missing (or a stone.design)");
+    expect_error("both", head + "database = \"a.gemdb\"\ndesign = \"a.toml\"\n",
+                 "catalogue.toml:3: stone.design: and stone.database both given: one of them");
+    expect_error("design-escapes", head + "design = \"../a.toml\"\n",
+                 "catalogue.toml:5: stone.design: '../a.toml' must not leave the catalogue "
+                 "directory");
     expect_error("escapes", head + "database = \"../other/a.gemdb\"\n",
                  "catalogue.toml:5: stone.database: '../other/a.gemdb' must not leave the "
                  "catalogue directory");

@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include "geometry/cuts.hpp"
+#include "optics/material.hpp"
+
 #include "catalogue/validate.hpp"
 #include "catalogue_test_support.hpp"
 #include "tables/reader.hpp"
@@ -137,6 +140,41 @@ TEST(CatalogueValidate, MissingDirectoryIsNamed) {
     const fs::path dir = fresh_dir("validate-gone") / "nothing";
     const std::string error = rejection("gone", dir);
     EXPECT_EQ(error.rfind("catalogue 'nothing' rejected: " + dir.string() + ": ", 0), 0u) << error;
+}
+
+TEST(CatalogueValidate, DesignsAreBuiltAndABrokenOneIsLeftOutByName) {
+    const fs::path dir = fresh_dir("validate-designs");
+    write_text(dir / "catalogue.toml", R"([catalogue]
+name = "designs"
+[[stone]]
+name = "Round"
+design = "round.toml"
+[[stone]]
+name = "Odd"
+design = "odd.toml"
+)");
+    write_text(dir / "round.toml", "[stone]\ncut = \"round\"\n[material]\nname = \"diamond\"\n");
+    write_text(dir / "odd.toml", "[stone]\ncut = \"dodecahedron\"\n");
+    auto result = validate_catalogue(dir);
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Catalogue& c = result.value();
+    ASSERT_EQ(c.stones.size(), 1u);
+    EXPECT_EQ(c.stones[0].name, "Round");
+    ASSERT_NE(c.stones[0].designed, nullptr);
+    EXPECT_EQ(c.stones[0].opened, nullptr);
+    EXPECT_EQ(c.stones[0].designed->material.name, "diamond");
+    // The default round, as the cut generator makes it directly.
+    const Stone direct =
+        make_cut(default_cut_params(CutShape::round_brilliant), *find_material("diamond")).value();
+    EXPECT_EQ(c.stones[0].designed->facets.size(), direct.facets.size());
+    EXPECT_EQ(c.stones[0].designed->vertices.size(), direct.vertices.size());
+    ASSERT_EQ(c.left_out.size(), 1u);
+    EXPECT_EQ(c.left_out[0].rfind("stone 'Odd' left out: odd.toml:2: ", 0), 0u) << c.left_out[0];
+
+    // With no design readable there is nothing to show: the catalogue is refused.
+    write_text(dir / "round.toml", "[stone]\ncut = \"dodecahedron\"\n");
+    EXPECT_NE(rejection("designs", dir).find("rejected: stone 'Round' left out"), std::string::npos)
+        << rejection("designs", dir);
 }
 
 }  // namespace
