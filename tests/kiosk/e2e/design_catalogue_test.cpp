@@ -49,8 +49,9 @@ TEST(KioskDesigns, ADesignIsShownAtOnceAndABrokenOneIsLeftOut) {
     ASSERT_TRUE(kiosk.wait_for_line("showing catalogue 'designs'", 60s)) << kiosk.log();
     std::printf("copy to catalogue shown: %.2f s (settle_s, validation, install)\n",
                 std::chrono::duration<double>(std::chrono::steady_clock::now() - copied).count());
+    // One error line names the stone, its file and what is wrong (logged just after).
+    ASSERT_TRUE(kiosk.wait_for_line("left out", 10s)) << kiosk.log();
     const std::string log = kiosk.log();
-    // One error line names the stone, its file and what is wrong.
     const auto at = log.find("stone 'broken' left out: broken.toml");
     ASSERT_NE(at, std::string::npos) << log;
     const auto line_start = log.rfind('\n', at) + 1;
