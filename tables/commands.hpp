@@ -26,6 +26,14 @@ struct BuildOptions {
     bool choose_only = false;  // print the choice, build nothing
 };
 
+struct CatalogueOptions {
+    std::string designs_dir;  // stone descriptions (.toml) and models (.asc, .obj, .stl)
+    std::string out;          // the catalogue folder to write
+    std::string name = "designs";
+    std::string material = "diamond";  // for model files (a .toml names its own)
+    BuildOptions build;                // the tables of stones that need them
+};
+
 struct VerifyOptions {
     std::string database;
     std::uint32_t samples = 2000;
@@ -41,6 +49,7 @@ struct InspectOptions {
 };
 
 int run_build(const BuildOptions& options);
+int run_catalogue(const CatalogueOptions& options);
 int run_info(const std::string& database);
 int run_verify(const VerifyOptions& options);
 int run_inspect(const InspectOptions& options);

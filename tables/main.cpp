@@ -78,6 +78,29 @@ int main(int argc, char** argv) {
     CLI::App* i = app.add_subcommand("info", "header, stone, parameters and sizes of a database");
     i->add_option("database", info_db, "database (.gemdb)")->required();
 
+    CatalogueOptions catalogue;
+    CLI::App* c = app.add_subcommand(
+        "catalogue", "a folder of designs into a kiosk catalogue (tables only where they pay)");
+    c->add_option("designs", catalogue.designs_dir,
+                  "folder of stone descriptions (.toml) and models (.asc, .obj, .stl)")
+        ->required();
+    c->add_option("-o,--out", catalogue.out, "catalogue folder to write")->required();
+    c->add_option("--name", catalogue.name, "the catalogue's name")->capture_default_str();
+    c->add_option("--material", catalogue.material, "material of the model files")
+        ->capture_default_str();
+    c->add_option("--levels", catalogue.build.levels, "tables: image sides per view, ascending")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--spacing", catalogue.build.spacing_deg, "tables: angle between stored views")
+        ->check(CLI::Range(0.05, 90.0))
+        ->capture_default_str();
+    c->add_option("--min-elevation", catalogue.build.min_elevation_deg,
+                  "tables: lowest view elevation stored (degrees)")
+        ->check(CLI::Range(-90.0, 89.0))
+        ->capture_default_str();
+    c->add_option("--jobs", catalogue.build.jobs, "tracing threads (default: every core)")
+        ->check(CLI::Range(1, 1024));
+
     VerifyOptions verify;
     CLI::App* v = app.add_subcommand(
         "verify", "check every checksum and re-trace a sample of pixels with the exact tracer");
@@ -104,6 +127,12 @@ int main(int argc, char** argv) {
             return fail("--levels: " + bad);
         }
         return run_build(build);
+    }
+    if (c->parsed()) {
+        if (const std::string bad = check_levels(catalogue.build.levels); !bad.empty()) {
+            return fail("--levels: " + bad);
+        }
+        return run_catalogue(catalogue);
     }
     if (i->parsed()) return run_info(info_db);
     if (v->parsed()) return run_verify(verify);

@@ -9,6 +9,7 @@
 #include <cstdio>
 #include <filesystem>
 #include <fstream>
+#include <sstream>
 #include <string>
 #include <thread>
 
@@ -249,6 +250,59 @@ TEST_F(GemtablesCli, InspectWritesBothPictures) {
         run("inspect " + db.string() + " --view-direction 0,90 --level 5 -o " + prefix.string());
     EXPECT_NE(bad.status, 0);
     EXPECT_NE(bad.output.find("--level 5"), std::string::npos) << bad.output;
+}
+
+TEST_F(GemtablesCli, ACatalogueOfDesignsHasTablesOnlyWhereTheyPay) {
+    const fs::path designs = dir_ / "designs";
+    const fs::path out = dir_ / "catalogue";
+    fs::remove_all(designs);
+    fs::remove_all(out);
+    fs::create_directories(designs);
+    const fs::path models = fs::path(GEM_FIXTURES_DIR) / "models";
+    fs::copy_file(models / "square_step.asc", designs / "square_step.asc");  // convex
+    fs::copy_file(models / "l_prism.obj", designs / "l_prism.obj");          // not convex
+    write_text(designs / "broken.toml", "[stone]\ncut = \"round\"\nwidth_mm = -2\n");
+    const Outcome made = run("catalogue " + designs.string() + " -o " + out.string() +
+                             " --name spring --material sapphire " + kTinyOptions);
+    ASSERT_EQ(made.status, 0) << made.output;
+    // A line per design, the broken one named with its own file and fault.
+    EXPECT_NE(made.output.find("1/3 broken.toml: left out: " + (designs / "broken.toml").string() +
+                               ":3: stone.width_mm"),
+              std::string::npos)
+        << made.output;
+    EXPECT_NE(made.output.find("2/3 l_prism.obj: not convex"), std::string::npos) << made.output;
+    EXPECT_NE(made.output.find("3/3 square_step.asc: convex"), std::string::npos) << made.output;
+
+    std::ifstream in(out / "catalogue.toml");
+    std::stringstream manifest;
+    manifest << in.rdbuf();
+    const std::string text = manifest.str();
+    EXPECT_NE(text.find("name = \"spring\""), std::string::npos) << text;
+    EXPECT_NE(text.find("database = \"l_prism.gemdb\""), std::string::npos) << text;
+    EXPECT_NE(text.find("design = \"square_step.toml\""), std::string::npos) << text;
+    EXPECT_EQ(text.find("broken"), std::string::npos) << text;
+    // The model's description names the model beside it and the material asked for.
+    std::ifstream described(out / "square_step.toml");
+    std::stringstream description;
+    description << described.rdbuf();
+    EXPECT_NE(description.str().find("model = \"square_step.asc\""), std::string::npos);
+    EXPECT_NE(description.str().find("name = \"sapphire\""), std::string::npos);
+    EXPECT_TRUE(fs::exists(out / "square_step.asc"));
+    // The tables it did build are sound.
+    const Outcome verified = run("verify " + (out / "l_prism.gemdb").string() + " --samples 50");
+    EXPECT_EQ(verified.status, 0) << verified.output;
+}
+
+TEST_F(GemtablesCli, ACatalogueWithoutOneReadableDesignIsRefused) {
+    const fs::path designs = dir_ / "designs";
+    fs::remove_all(designs);
+    fs::create_directories(designs);
+    write_text(designs / "broken.toml", "[stone]\ncut = \"dodecahedron\"\n");
+    const Outcome made = run("catalogue " + designs.string() + " -o " + (dir_ / "out").string());
+    EXPECT_EQ(made.status, 1) << made.output;
+    EXPECT_NE(made.output.find("gemtables: no design could be read"), std::string::npos)
+        << made.output;
+    EXPECT_FALSE(fs::exists(dir_ / "out" / "catalogue.toml"));
 }
 
 }  // namespace
