@@ -28,13 +28,7 @@ Result<BloomPass> BloomPass::make(int width, int height) {
         Level level;
         level.width = w;
         level.height = h;
-        level.texture = make_texture();
-        glBindTexture(GL_TEXTURE_2D, level.texture.get());
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, w, h);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+        level.texture = make_texture_2d(GL_RGBA16F, w, h, GL_LINEAR);
         level.framebuffer = make_framebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,

@@ -71,6 +71,18 @@ inline Texture make_texture() {
     glGenTextures(1, &n);
     return Texture(n);
 }
+// A width × height 2D texture of `format` (immutable storage, one level), sampled with
+// `filter` and clamped at its edges; left bound to GL_TEXTURE_2D.
+inline Texture make_texture_2d(GLenum format, int width, int height, GLenum filter) {
+    Texture texture = make_texture();
+    glBindTexture(GL_TEXTURE_2D, texture.get());
+    glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return texture;
+}
 inline Buffer make_buffer() {
     GLuint n = 0;
     glGenBuffers(1, &n);

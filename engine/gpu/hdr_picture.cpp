@@ -50,11 +50,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
 
     // The resolved (or only) scene picture: RGBA16F where renderable, else 8-bit sRGB.
     for (const GLenum format : {GLenum(GL_RGBA16F), GLenum(GL_SRGB8_ALPHA8)}) {
-        p.resolved_ = make_texture();
-        glBindTexture(GL_TEXTURE_2D, p.resolved_.get());
-        glTexStorage2D(GL_TEXTURE_2D, 1, format, width, height);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        p.resolved_ = make_texture_2d(format, width, height, GL_NEAREST);
         p.resolved_depth_ = make_renderbuffer();
         glBindRenderbuffer(GL_RENDERBUFFER, p.resolved_depth_.get());
         glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
@@ -99,11 +95,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         auto accumulate = build_program("accumulate");
         if (!accumulate) return Error{accumulate.error()};
         p.accumulate_.emplace(std::move(accumulate).value());
-        p.mean_ = make_texture();
-        glBindTexture(GL_TEXTURE_2D, p.mean_.get());
-        glTexStorage2D(GL_TEXTURE_2D, 1, GL_RGBA16F, width, height);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-        glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+        p.mean_ = make_texture_2d(GL_RGBA16F, width, height, GL_NEAREST);
         p.mean_framebuffer_ = make_framebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, p.mean_framebuffer_.get());
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p.mean_.get(),

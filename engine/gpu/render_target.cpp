@@ -17,13 +17,7 @@ Result<RenderTarget> RenderTarget::make(int width, int height) {
     RenderTarget t;
     t.width_ = width;
     t.height_ = height;
-    t.colour_ = make_texture();
-    glBindTexture(GL_TEXTURE_2D, t.colour_.get());
-    glTexStorage2D(GL_TEXTURE_2D, 1, GL_SRGB8_ALPHA8, width, height);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    t.colour_ = make_texture_2d(GL_SRGB8_ALPHA8, width, height, GL_LINEAR);
     t.depth_ = make_renderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.get());
     glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);

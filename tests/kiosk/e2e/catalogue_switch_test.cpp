@@ -30,14 +30,6 @@ void damage(const fs::path& database) {
     f.write(&byte, 1);
 }
 
-Image snapshot_after_signal(KioskProcess& kiosk, const fs::path& file) {
-    fs::remove(file);
-    kiosk.signal(SIGUSR1);
-    for (int i = 0; i < 200 && !fs::exists(file); ++i) kiosk.wait_for_line("\n", 1s);
-    auto image = read_png(file);
-    return image ? std::move(image).value() : Image{};
-}
-
 TEST(KioskCatalogue, NewCatalogueIsShownAndADamagedOneIsRefused) {
     auto sapphire = test_catalogue("oval-sapphire");
     auto diamond = test_catalogue("tolkowsky-diamond");

@@ -61,19 +61,14 @@ TEST(KioskDesigns, ADesignIsShownAtOnceAndABrokenOneIsLeftOut) {
     // The emerald is on screen, drawn by the trace without tables; the snapshot waits for the
     // still view's frames to be averaged, as the reference is.
     std::this_thread::sleep_for(3s);
-    fs::remove(dir / "snapshots" / "snapshot.png");
-    kiosk.signal(SIGUSR1);
-    for (int i = 0; i < 200 && !fs::exists(dir / "snapshots" / "snapshot.png"); ++i) {
-        kiosk.wait_for_line("\n", 1s);
-    }
-    auto shown = read_png(dir / "snapshots" / "snapshot.png");
-    ASSERT_TRUE(shown.ok()) << shown.error() << kiosk.log();
+    const Image shown = snapshot_after_signal(kiosk, dir / "snapshots" / "snapshot.png");
+    ASSERT_FALSE(shown.pixels.empty()) << kiosk.log();
     auto emerald = reference_picture(designs, kiosk::kStartView);
     ASSERT_TRUE(emerald.ok()) << emerald.error();
     auto oval = reference_picture(sapphire.value(), kiosk::kStartView);
     ASSERT_TRUE(oval.ok()) << oval.error();
-    const double as_design = psnr_srgb8(shown.value(), emerald.value());
-    const double as_before = psnr_srgb8(shown.value(), oval.value());
+    const double as_design = psnr_srgb8(shown, emerald.value());
+    const double as_before = psnr_srgb8(shown, oval.value());
     std::printf("the delivered design: %.1f dB to its reference, %.1f dB to the stone before\n",
                 as_design, as_before);
     EXPECT_GT(as_design, 35.0);

@@ -92,4 +92,14 @@ Finished run_kiosk(const std::vector<std::string>& arguments, std::chrono::secon
     return finished;
 }
 
+Image snapshot_after_signal(KioskProcess& kiosk, const std::filesystem::path& file) {
+    std::filesystem::remove(file);
+    kiosk.signal(SIGUSR1);
+    for (int i = 0; i < 200 && !std::filesystem::exists(file); ++i) {
+        kiosk.wait_for_line("\n", std::chrono::seconds(1));
+    }
+    auto image = read_png(file);
+    return image ? std::move(image).value() : Image{};
+}
+
 }  // namespace gem::kiosk_e2e

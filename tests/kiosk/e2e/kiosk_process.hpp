@@ -5,8 +5,11 @@
 #include <sys/types.h>
 
 #include <chrono>
+#include <filesystem>
 #include <string>
 #include <vector>
+
+#include "render/image.hpp"
 
 namespace gem::kiosk_e2e {
 
@@ -40,5 +43,9 @@ struct Finished {
     std::string log;
 };
 Finished run_kiosk(const std::vector<std::string>& arguments, std::chrono::seconds deadline);
+
+// Asks the running kiosk for a snapshot (SIGUSR1) into `file` and reads it; an empty image
+// when none came within 200 log lines or seconds.
+Image snapshot_after_signal(KioskProcess& kiosk, const std::filesystem::path& file);
 
 }  // namespace gem::kiosk_e2e
