@@ -144,31 +144,34 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
                 r.table()->level_for(r.table()->database().camera().field_mm /
                                      camera.value().pixel_size()));
         }
+        // One frame into the HDR picture and out through its finishing passes; `still`: the
+        // view of the frame before, moved by the picture's sub-pixel jitter.
+        const auto draw = [&](bool still) -> Result<gpu::FrameStats> {
+            hdr.value().begin_frame(still);
+            CameraSettings jittered = cs;
+            jittered.shift += hdr.value().jitter_ndc();
+            auto moved = Camera::make(jittered, r.stone_radius_mm(), scene.width, scene.height);
+            if (!moved) return Error{moved.error()};
+            hdr.value().bind();
+            auto drawn = r.render(moved.value(), false);
+            if (!drawn) return drawn;
+            auto finished = hdr.value().finish(target.value());
+            if (!finished) return Error{finished.error()};
+            return drawn;
+        };
         const auto start = std::chrono::steady_clock::now();
-        hdr.value().begin_frame(false);
-        hdr.value().bind();
-        auto stats = r.render(camera.value(), false);
+        auto stats = draw(false);
         if (!stats) return fail(stats.error());
-        auto finished = hdr.value().finish(target.value());
-        if (!finished) return fail(finished.error());
         glFinish();
         frame_ms.push_back(
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
                 .count());
         // A single picture is a still view: as the kiosk refines one, frames a sub-pixel apart
         // averaged (not timed: the time above is one frame's).
-        for (int still = 0; o.frames == 1 && still < o.still_frames && o.still_frames > 1;
+        for (int still = 0; o.frames == 1 && o.still_frames > 1 && still < o.still_frames;
              ++still) {
-            hdr.value().begin_frame(true);
-            CameraSettings jittered = cs;
-            jittered.shift += hdr.value().jitter_ndc();
-            auto moved = Camera::make(jittered, r.stone_radius_mm(), scene.width, scene.height);
-            if (!moved) return fail(moved.error());
-            hdr.value().bind();
-            auto drawn = r.render(moved.value(), false);
-            if (!drawn) return fail(drawn.error());
-            auto done = hdr.value().finish(target.value());
-            if (!done) return fail(done.error());
+            auto refined = draw(true);
+            if (!refined) return fail(refined.error());
         }
         const gpu::TableFrameStats& t = stats.value().table;
         stream_ms.push_back(t.acquire_ms + t.upload_ms + t.wait_ms);

@@ -29,10 +29,7 @@ Result<BloomPass> BloomPass::make(int width, int height) {
         level.width = w;
         level.height = h;
         level.texture = make_texture_2d(GL_RGBA16F, w, h, GL_LINEAR);
-        level.framebuffer = make_framebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                               level.texture.get(), 0);
+        level.framebuffer = make_framebuffer_with(level.texture.get());
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
             return Error{"glare: the GPU cannot render to RGBA16F"};
         }

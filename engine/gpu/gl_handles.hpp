@@ -98,6 +98,29 @@ inline Renderbuffer make_renderbuffer() {
     glGenRenderbuffers(1, &n);
     return Renderbuffer(n);
 }
+// A 24-bit depth renderbuffer of width × height, multisampled when `samples` > 1.
+inline Renderbuffer make_depth_renderbuffer(int width, int height, int samples = 1) {
+    Renderbuffer depth = make_renderbuffer();
+    glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
+    if (samples > 1) {
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width,
+                                         height);
+    } else {
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+    }
+    return depth;
+}
+// A framebuffer drawing into the 2D texture `colour` and, when given, the renderbuffer
+// `depth`; left bound to GL_FRAMEBUFFER for the caller's completeness check.
+inline Framebuffer make_framebuffer_with(GLuint colour, GLuint depth = 0) {
+    Framebuffer framebuffer = make_framebuffer();
+    glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
+    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
+    if (depth != 0) {
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+    }
+    return framebuffer;
+}
 inline VertexArray make_vertex_array() {
     GLuint n = 0;
     glGenVertexArrays(1, &n);

@@ -51,15 +51,8 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     // The resolved (or only) scene picture: RGBA16F where renderable, else 8-bit sRGB.
     for (const GLenum format : {GLenum(GL_RGBA16F), GLenum(GL_SRGB8_ALPHA8)}) {
         p.resolved_ = make_texture_2d(format, width, height, GL_NEAREST);
-        p.resolved_depth_ = make_renderbuffer();
-        glBindRenderbuffer(GL_RENDERBUFFER, p.resolved_depth_.get());
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-        p.resolved_framebuffer_ = make_framebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, p.resolved_framebuffer_.get());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D,
-                               p.resolved_.get(), 0);
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
-                                  p.resolved_depth_.get());
+        p.resolved_depth_ = make_depth_renderbuffer(width, height);
+        p.resolved_framebuffer_ = make_framebuffer_with(p.resolved_.get(), p.resolved_depth_.get());
         p.high_range_ = format == GL_RGBA16F;
         if (glGetError() == GL_NO_ERROR && complete()) break;
         p.resolved_framebuffer_.reset();
@@ -73,10 +66,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         p.multisampled_colour_ = make_renderbuffer();
         glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_colour_.get());
         glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colour_format, width, height);
-        p.multisampled_depth_ = make_renderbuffer();
-        glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_depth_.get());
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width,
-                                         height);
+        p.multisampled_depth_ = make_depth_renderbuffer(width, height, samples);
         p.multisampled_ = make_framebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, p.multisampled_.get());
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
@@ -96,10 +86,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         if (!accumulate) return Error{accumulate.error()};
         p.accumulate_.emplace(std::move(accumulate).value());
         p.mean_ = make_texture_2d(GL_RGBA16F, width, height, GL_NEAREST);
-        p.mean_framebuffer_ = make_framebuffer();
-        glBindFramebuffer(GL_FRAMEBUFFER, p.mean_framebuffer_.get());
-        glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, p.mean_.get(),
-                               0);
+        p.mean_framebuffer_ = make_framebuffer_with(p.mean_.get());
         if (!complete()) return Error{"picture: the still view's mean cannot be rendered"};
     }
     if (p.high_range_ && options.glare > 0.0) {

@@ -18,13 +18,8 @@ Result<RenderTarget> RenderTarget::make(int width, int height) {
     t.width_ = width;
     t.height_ = height;
     t.colour_ = make_texture_2d(GL_SRGB8_ALPHA8, width, height, GL_LINEAR);
-    t.depth_ = make_renderbuffer();
-    glBindRenderbuffer(GL_RENDERBUFFER, t.depth_.get());
-    glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
-    t.framebuffer_ = make_framebuffer();
-    glBindFramebuffer(GL_FRAMEBUFFER, t.framebuffer_.get());
-    glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, t.colour_.get(), 0);
-    glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, t.depth_.get());
+    t.depth_ = make_depth_renderbuffer(width, height);
+    t.framebuffer_ = make_framebuffer_with(t.colour_.get(), t.depth_.get());
     const GLenum status = glCheckFramebufferStatus(GL_FRAMEBUFFER);
     if (status != GL_FRAMEBUFFER_COMPLETE) {
         return Error{"render target: framebuffer incomplete (status " + std::to_string(status) +

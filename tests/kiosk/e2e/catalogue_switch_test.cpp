@@ -61,7 +61,7 @@ TEST(KioskCatalogue, NewCatalogueIsShownAndADamagedOneIsRefused) {
     EXPECT_EQ(line.rfind("<3>", 0), 0u) << "an error line for journald: " << line;
 
     // The screen still shows the diamond, not the sapphire it started with.
-    const Image after = snapshot_after_signal(kiosk, dir / "snapshots" / "snapshot.png");
+    const Image after = settled_snapshot(kiosk, dir / "snapshots" / "snapshot.png");
     ASSERT_FALSE(after.pixels.empty()) << kiosk.log();
     auto diamond_ref = reference_picture(diamond.value(), kiosk::kStartView);
     auto sapphire_ref = reference_picture(sapphire.value(), kiosk::kStartView);

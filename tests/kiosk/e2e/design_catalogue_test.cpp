@@ -8,7 +8,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-#include <thread>
 
 #include "app/start_view.hpp"
 #include "e2e_fixture.hpp"
@@ -60,8 +59,7 @@ TEST(KioskDesigns, ADesignIsShownAtOnceAndABrokenOneIsLeftOut) {
 
     // The emerald is on screen, drawn by the trace without tables; the snapshot waits for the
     // still view's frames to be averaged, as the reference is.
-    std::this_thread::sleep_for(3s);
-    const Image shown = snapshot_after_signal(kiosk, dir / "snapshots" / "snapshot.png");
+    const Image shown = settled_snapshot(kiosk, dir / "snapshots" / "snapshot.png");
     ASSERT_FALSE(shown.pixels.empty()) << kiosk.log();
     auto emerald = reference_picture(designs, kiosk::kStartView);
     ASSERT_TRUE(emerald.ok()) << emerald.error();

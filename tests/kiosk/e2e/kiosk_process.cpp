@@ -102,4 +102,14 @@ Image snapshot_after_signal(KioskProcess& kiosk, const std::filesystem::path& fi
     return image ? std::move(image).value() : Image{};
 }
 
+Image settled_snapshot(KioskProcess& kiosk, const std::filesystem::path& file) {
+    Image last = snapshot_after_signal(kiosk, file);
+    for (int i = 0; i < 30 && !last.pixels.empty(); ++i) {
+        Image next = snapshot_after_signal(kiosk, file);
+        if (next.pixels == last.pixels) return next;
+        last = std::move(next);
+    }
+    return last;
+}
+
 }  // namespace gem::kiosk_e2e

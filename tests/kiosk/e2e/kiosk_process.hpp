@@ -47,5 +47,8 @@ Finished run_kiosk(const std::vector<std::string>& arguments, std::chrono::secon
 // Asks the running kiosk for a snapshot (SIGUSR1) into `file` and reads it; an empty image
 // when none came within 200 log lines or seconds.
 Image snapshot_after_signal(KioskProcess& kiosk, const std::filesystem::path& file);
+// Snapshots until two in a row are the same picture: a still view has then all its averaged
+// frames, whatever the machine's load (at most 30 tries; the last one otherwise).
+Image settled_snapshot(KioskProcess& kiosk, const std::filesystem::path& file);
 
 }  // namespace gem::kiosk_e2e
