@@ -56,6 +56,13 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
     program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));
 }
 
+std::uint32_t shading_features(const StoneFrame& frame) {
+    std::uint32_t features = 0;
+    if (frame.shading.model == ShadingModel::thesis) features |= kThesisShading;
+    if (frame.cube_half_mm <= 0.0) features |= kCubeAtInfinity;
+    return features;
+}
+
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
@@ -73,7 +80,6 @@ void set_shading_uniforms(const Program& program, const StoneFrame& frame, int u
     program.set("u_light_count", lights);
     glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
     glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
-    program.set("u_thesis", s.model == ShadingModel::thesis ? 1 : 0);
     program.set("u_k_s", static_cast<float>(s.k_s));
     program.set("u_k_st", static_cast<float>(s.k_st));
     program.set("u_h", static_cast<float>(s.h));

@@ -6,6 +6,7 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
+#include "gpu/program_variants.hpp"
 #include "render/camera.hpp"
 #include "render/shading.hpp"
 
@@ -29,6 +30,10 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
 // stone's centre (everything drawn must lie inside it: the ring as well as the stone). The
 // stone pass and the ring share it, so each hides the other where it is nearer.
 glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
+
+// The shading.glsl features `frame` needs compiled in (program_variants.hpp: the thesis'
+// shading model, a cube at infinity).
+std::uint32_t shading_features(const StoneFrame& frame);
 
 // Binds the environment cube to texture unit `unit`.
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit);

@@ -4,6 +4,7 @@
 // chunks in order. Compile and link failures name the program, the stage and its files, and
 // carry the driver's log.
 
+#include <cstdint>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -23,6 +24,9 @@ struct ProgramSpec {
     std::vector<std::string> vertex;    // chunk names, main file last
     std::vector<std::string> fragment;  // chunk names, main file last
     std::vector<std::string> defines;   // "NON_CONVEX", "MAX_LIGHTS 4"
+    // The ShaderFeature bits its sources test (program_variants.hpp): the tests build every
+    // combination.
+    std::uint32_t features = 0;
 };
 
 class Program {

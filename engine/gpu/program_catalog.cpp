@@ -1,24 +1,39 @@
 #include "gpu/program_catalog.hpp"
 
+#include "gpu/program_variants.hpp"
+
 namespace gem::gpu {
 
 std::vector<ProgramSpec> all_program_specs() {
+    constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
+    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
         // Every stone method draws the stone pass (stone.vert, stone_geometry.hpp) and reads
         // the facets from stone.glsl; each differs in its fragment shader's last file.
-        {"table", {"stone.vert"}, {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"}, {}},
+        {"table",
+         {"stone.vert"},
+         {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"},
+         {},
+         kTableFeatures},
         {"table_non_convex",
          {"stone.vert"},
          {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"},
-         {"NON_CONVEX"}},
+         {"NON_CONVEX"},
+         kTableFeatures},
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
-        {"trace", {"stone.vert"}, {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"}, {}},
+        {"trace",
+         {"stone.vert"},
+         {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"},
+         {},
+         kTraceFeatures},
+        // Its shading only: a non-convex stone's fire is not traced per channel.
         {"trace_non_convex",
          {"stone.vert"},
          {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"},
-         {"NON_CONVEX"}},
+         {"NON_CONVEX"},
+         kShadingFeatures},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
         {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}},
         // The ring's metal, physically based (ring_renderer.hpp).

@@ -6,7 +6,6 @@
 
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/gl_check.hpp"
-#include "gpu/program_catalog.hpp"
 #include "gpu/texel_array.hpp"
 
 namespace gem::gpu {
@@ -43,10 +42,7 @@ Result<TableMethod> TableMethod::make(std::shared_ptr<const Database> database,
     auto stone = StoneGeometry::upload(m.database_->stone());
     if (!stone) return Error{"table: " + stone.error()};
     m.stone_ = std::make_unique<StoneGeometry>(std::move(stone).value());
-    auto program = build_program(m.database_->stone().convex ? "table" : "table_non_convex");
-    if (!program) return Error{program.error()};
-    m.program_ = std::make_unique<Program>(std::move(program).value());
-    m.stone_->attach(*m.program_);
+    m.programs_ = ProgramVariants(m.database_->stone().convex ? "table" : "table_non_convex", {});
     m.cache_ = std::make_unique<ViewCache>(std::make_shared<DatabaseViewSource>(m.database_),
                                            options.cache);
     return m;
@@ -218,15 +214,18 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         // upload() may have reordered the list; v0 still points at a live view (three kept).
     }
 
-    const Program& p = *program_;
+    const bool dispersion = database_->params().dispersion;
+    const std::uint32_t features = shading_features(frame) | (dispersion ? kFireFirstOrder : 0u) |
+                                   (v1 != nullptr ? kTwoViews : 0u);
+    auto chosen = programs_.get(features, [&](const Program& built) { stone_->attach(built); });
+    if (!chosen) return Error{chosen.error()};
+    const Program& p = *chosen.value();
     p.use();
     set_camera_uniforms(p, camera, frame.scene_radius_mm);
     set_shading_uniforms(p, frame, 0);
     stone_->bind(p, 1);
     p.set("u_field_mm", static_cast<float>(model.field_mm));
     p.set("u_image_scale", static_cast<float>(image_scale));
-    const bool dispersion = database_->params().dispersion;
-    p.set("u_dispersion", dispersion ? 1 : 0);
     if (dispersion) {
         const auto nd = static_cast<float>(frame.material.index());
         p.set("u_dn_channel", channel_indices(frame.material) - glm::vec3(nd));
@@ -252,11 +251,10 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         p.set(names[6], v.side);
     };
     bind_view(*v0, first, 0, 3);
-    p.set("u_views", v1 != nullptr ? 2 : 1);
-    p.set("u_blend", static_cast<float>(blend));
-    // Slot 1's samplers need textures of their type even when unused: two sampler types on
-    // one unit (their default, unit 0, holds the cube) fail the draw in GL ES.
-    bind_view(v1 != nullptr ? *v1 : *v0, v1 != nullptr ? second : first, 1, 7);
+    if (v1 != nullptr) {
+        p.set("u_blend", static_cast<float>(blend));
+        bind_view(*v1, second, 1, 7);
+    }
 
     stone_->draw_front_faces();
     stats.drawn = true;

@@ -9,7 +9,7 @@
 
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
-#include "gpu/program.hpp"
+#include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "tables/reader.hpp"
 #include "tables/view_cache.hpp"
@@ -75,7 +75,7 @@ class TableMethod {
     std::unique_ptr<ViewCache> cache_;
     TableOptions options_;
     std::unique_ptr<StoneGeometry> stone_;
-    std::unique_ptr<Program> program_;
+    ProgramVariants programs_;  // shading, fire and one or two views compiled in
     // The views on the GPU, most recently used first; a blend needs two, a turn a third.
     std::vector<std::unique_ptr<GpuView>> gpu_views_;
     // Packing space for uploads, kept so a turn does not reallocate tens of MB per view.

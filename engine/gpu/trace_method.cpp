@@ -10,7 +10,6 @@
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_check.hpp"
-#include "gpu/program_catalog.hpp"
 #include "gpu/render_target.hpp"
 #include "render/camera.hpp"
 
@@ -35,11 +34,23 @@ std::string exit_planes_define(const Stone& stone) {
     return text;
 }
 
-Result<Program> build_convex(const Stone& stone, ExitSearch search) {
+ProgramVariants convex_programs(const Stone& stone, ExitSearch search) {
     if (search == ExitSearch::constants) {
-        return build_program("trace", {"EXIT_UNROLLED", exit_planes_define(stone)});
+        return ProgramVariants("trace", {"EXIT_UNROLLED", exit_planes_define(stone)});
     }
-    return build_program("trace");
+    return ProgramVariants("trace", {});
+}
+
+std::uint32_t fire_features(TraceDispersion dispersion) {
+    switch (dispersion) {
+        case TraceDispersion::none:
+            return 0;
+        case TraceDispersion::first_order:
+            return kFireFirstOrder;
+        case TraceDispersion::exact:
+            return kFireExact;
+    }
+    return 0;
 }
 
 }  // namespace
@@ -56,34 +67,30 @@ const char* to_string(ExitSearch search) {
     return "?";
 }
 
-TraceMethod::TraceMethod(StoneGeometry geometry, Program program)
-    : geometry_(std::move(geometry)), program_(std::move(program)) {}
+TraceMethod::TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex)
+    : geometry_(std::move(geometry)), programs_(std::move(programs)), convex_(convex) {}
+
+Result<const Program*> TraceMethod::program(std::uint32_t features) {
+    return programs_.get(features, [&](const Program& built) { geometry_.attach(built); });
+}
 
 Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     auto geometry = StoneGeometry::upload(stone);
     if (!geometry) return Error{"trace: " + geometry.error()};
     const double radius = bounding_radius(stone.vertices);
     if (!stone.convex) {
-        auto program = build_program("trace_non_convex");
-        if (!program) return Error{program.error()};
-        geometry.value().attach(program.value());
-        return TraceMethod(std::move(geometry).value(), std::move(program).value());
+        return TraceMethod(std::move(geometry).value(), ProgramVariants("trace_non_convex", {}),
+                           false);
     }
     if (search != ExitSearch::measured) {
-        auto program = build_convex(stone, search);
-        if (!program) return Error{program.error()};
-        geometry.value().attach(program.value());
-        TraceMethod m(std::move(geometry).value(), std::move(program).value());
+        TraceMethod m(std::move(geometry).value(), convex_programs(stone, search), true);
         m.search_ = search;
         return m;
     }
 
-    // Both variants on one small picture of the stone (a three-quarter view, the default trace
+    // Both searches on one small picture of the stone (a three-quarter view, the default trace
     // settings, an empty cube): the faster of three frames each, drawn to completion.
-    auto walk = build_convex(stone, ExitSearch::walk);
-    if (!walk) return Error{walk.error()};
-    auto constants = build_convex(stone, ExitSearch::constants);
-    if (!constants) return Error{constants.error()};
+    ProgramVariants constants = convex_programs(stone, ExitSearch::constants);
     constexpr int kSide = 64;
     auto target = RenderTarget::make(kSide, kSide);
     auto cube = EnvironmentCube::allocate(8);
@@ -99,9 +106,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     glGetIntegerv(GL_VIEWPORT, viewport);
     target.value().bind();
     StoneFrame frame{&stone, stone.material, camera.value(), {}, &cube.value(), 0.0, 2.0 * radius};
-    geometry.value().attach(walk.value());
-    geometry.value().attach(constants.value());
-    TraceMethod m(std::move(geometry).value(), std::move(walk).value());
+    TraceMethod m(std::move(geometry).value(), convex_programs(stone, ExitSearch::walk), true);
     auto time_ms = [&]() -> Result<double> {
         double best = std::numeric_limits<double>::infinity();
         for (int i = 0; i < 3; ++i) {  // the first compiles the shader's last stages: not timed
@@ -120,7 +125,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
         return best;
     };
     auto walk_ms = time_ms();
-    std::swap(m.program_, constants.value());
+    std::swap(m.programs_, constants);
     auto constants_ms = walk_ms ? time_ms() : Result<double>(Error{""});
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
@@ -130,7 +135,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     m.constants_ms_ = constants_ms.value();
     m.search_ = ExitSearch::constants;
     if (m.walk_ms_ <= m.constants_ms_) {
-        std::swap(m.program_, constants.value());  // back to the walk
+        std::swap(m.programs_, constants);  // back to the walk
         m.search_ = ExitSearch::walk;
     }
     return m;
@@ -139,22 +144,24 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
 Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& trace,
                                TraceDispersion dispersion) {
     assert(frame.environment != nullptr);
-    program_.use();
-    set_camera_uniforms(program_, frame.camera, frame.scene_radius_mm);
-    set_shading_uniforms(program_, frame, kEnvironmentUnit);
-    geometry_.bind(program_, kStoneUnit);
-    program_.set("u_facet_count", geometry_.facet_count());
-    program_.set("u_ior", static_cast<float>(frame.material.index()));
-    program_.set("u_max_depth", trace.max_depth);
-    program_.set("u_min_weight", static_cast<float>(trace.min_weight));
-    program_.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
-    program_.set("u_r_factor", static_cast<float>(trace.r_factor));
-    program_.set("u_t_factor", static_cast<float>(trace.t_factor));
-    const int mode = dispersion == TraceDispersion::none          ? 0
-                     : dispersion == TraceDispersion::first_order ? 1
-                                                                  : 2;
-    program_.set("u_dispersion", mode);
-    program_.set("u_ior_channel", channel_indices(frame.material));
+    // A non-convex stone's branches are traced at one index (trace.frag).
+    const std::uint32_t features =
+        shading_features(frame) | (convex_ ? fire_features(dispersion) : 0u);
+    auto chosen = program(features);
+    if (!chosen) return Error{chosen.error()};
+    const Program& p = *chosen.value();
+    p.use();
+    set_camera_uniforms(p, frame.camera, frame.scene_radius_mm);
+    set_shading_uniforms(p, frame, kEnvironmentUnit);
+    geometry_.bind(p, kStoneUnit);
+    p.set("u_facet_count", geometry_.facet_count());
+    p.set("u_ior", static_cast<float>(frame.material.index()));
+    p.set("u_max_depth", trace.max_depth);
+    p.set("u_min_weight", static_cast<float>(trace.min_weight));
+    p.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
+    p.set("u_r_factor", static_cast<float>(trace.r_factor));
+    p.set("u_t_factor", static_cast<float>(trace.t_factor));
+    p.set("u_ior_channel", channel_indices(frame.material));
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");

@@ -6,11 +6,13 @@
 // both exact (trace.frag): by walking the facets from a first guess (a handful of planes read
 // from the uniform block per bounce; trace/facet_walk.hpp) or by testing every plane, written
 // into the shader as constants (no reads, no divergence). Which is faster depends on the GPU,
-// so by default make() times both on a small picture and keeps the faster.
+// so by default make() times both on a small picture and keeps the faster. Shading model, cube
+// and fire are compiled into the program a draw uses (program_variants.hpp), built on first
+// use.
 
 #include "geometry/stone.hpp"
 #include "gpu/frame_uniforms.hpp"
-#include "gpu/program.hpp"
+#include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
@@ -47,9 +49,12 @@ class TraceMethod {
     double constants_ms() const { return constants_ms_; }
 
   private:
-    TraceMethod(StoneGeometry geometry, Program program);
+    TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex);
+    // The program of `features`, attached to the stone's block when it is first built.
+    Result<const Program*> program(std::uint32_t features);
     StoneGeometry geometry_;
-    Program program_;
+    ProgramVariants programs_;
+    bool convex_ = true;
     ExitSearch search_ = ExitSearch::walk;
     double walk_ms_ = 0.0;
     double constants_ms_ = 0.0;

@@ -4,6 +4,7 @@
 
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "gpu_test_support.hpp"
 
@@ -18,17 +19,46 @@ TEST(GpuPrograms, ContextIsOpenGlEs3) {
     EXPECT_GE(major, 3) << ctx.value()->description();
 }
 
-TEST(GpuPrograms, EveryProgramBuilds) {
+// Every combination of the features a spec's sources test (program_variants.hpp), as
+// ProgramVariants would build it.
+std::vector<gpu::ProgramSpec> every_variant(const gpu::ProgramSpec& spec) {
+    std::vector<gpu::ProgramSpec> variants;
+    for (std::uint32_t features = 0; features <= spec.features; ++features) {
+        if ((features & ~spec.features) != 0) continue;
+        gpu::ProgramSpec variant = spec;
+        for (std::string& define : gpu::feature_defines(features)) {
+            variant.defines.push_back(std::move(define));
+        }
+        variants.push_back(std::move(variant));
+    }
+    return variants;
+}
+
+TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();
     const auto specs = gpu::all_program_specs();
     ASSERT_FALSE(specs.empty());
+    int built = 0;
     for (const gpu::ProgramSpec& spec : specs) {
-        auto program = gpu::Program::build(spec);
-        EXPECT_TRUE(program.ok()) << program.error();
+        for (const gpu::ProgramSpec& variant : every_variant(spec)) {
+            auto program = gpu::Program::build(variant);
+            EXPECT_TRUE(program.ok()) << program.error();
+            ++built;
+        }
     }
+    // table, table_non_convex and trace test four features (16 each), trace_non_convex two.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 4 + 16 + 16 + 16 + 4);
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
+}
+
+TEST(GpuPrograms, FeatureDefinesFollowTheBits) {
+    EXPECT_TRUE(gpu::feature_defines(0).empty());
+    EXPECT_EQ(gpu::feature_defines(gpu::kThesisShading | gpu::kTwoViews),
+              (std::vector<std::string>{"SHADING_THESIS", "TWO_VIEWS"}));
+    EXPECT_EQ(gpu::feature_defines(gpu::kCubeAtInfinity | gpu::kFireFirstOrder | gpu::kFireExact),
+              (std::vector<std::string>{"CUBE_AT_INFINITY", "FIRE_FIRST_ORDER", "FIRE_EXACT"}));
 }
 
 TEST(GpuPrograms, StoneBlockHasTheLayoutTheUploadWrites) {

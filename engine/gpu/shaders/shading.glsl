@@ -4,18 +4,18 @@
 //  physical: w_r (E(r) + k_s L(r)) + sum_n w_n exp(-sigma path_n) (E(t_n) + k_st L(t_n))
 //  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))
 // E is the environment through the virtual cube, L the lights' specular lobes with the
-// obstruction test.
+// obstruction test. SHADING_THESIS picks the thesis' form, CUBE_AT_INFINITY a cube infinitely
+// far (program_variants.hpp: paths are compiled in, not picked by uniforms).
 
 #ifndef MAX_LIGHTS
 #define MAX_LIGHTS 4
 #endif
 
 uniform samplerCube u_environment;
-uniform float u_cube_half_mm;  // the virtual cube's half side about the stone's centre; 0: at infinity
+uniform float u_cube_half_mm;  // the virtual cube's half side about the stone's centre
 uniform int u_light_count;
 uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
 uniform vec3 u_light_colour[MAX_LIGHTS];
-uniform int u_thesis;  // 1: the thesis' R/T-factor shading; 0: physical
 uniform float u_k_s;
 uniform float u_k_st;
 uniform float u_h;
@@ -36,10 +36,13 @@ ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
 // Where the ray from p along d meets the virtual cube, as a cube-map lookup direction: the
 // six images were taken from the stone's centre, so the exit point matters, not only d.
 vec3 environment(vec3 p, vec3 d) {
-    if (u_cube_half_mm <= 0.0) return texture(u_environment, d).rgb;
+#ifdef CUBE_AT_INFINITY
+    return texture(u_environment, d).rgb;
+#else
     vec3 far_side = (sign(d) * u_cube_half_mm - p) / d;  // per-axis distance to the far face
     float t = min(far_side.x, min(far_side.y, far_side.z));
     return texture(u_environment, p + max(t, 0.0) * d).rgb;
+#endif
 }
 
 #ifdef NON_CONVEX
@@ -100,17 +103,21 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
 // The first reflected ray's share of the pixel.
 vec3 shade_reflected(vec3 p, vec3 d, vec3 n, float weight) {
     vec3 env = environment(p, d);
-    if (u_thesis == 0) return weight * (env + light_specular(p, d, n, u_k_s));
+#ifdef SHADING_THESIS
     return weight * (light_specular(p, d, n, u_k_s) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
+#else
+    return weight * (env + light_specular(p, d, n, u_k_s));
+#endif
 }
 
 // One exit ray's share; `env` is what the ray sees (per channel when dispersed).
 vec3 shade_exit(vec3 p, vec3 d, vec3 n, float weight, float path_mm, vec3 env) {
-    if (u_thesis == 0) {
-        vec3 transmittance = exp(-u_absorption * path_mm);
-        return weight * transmittance * (env + light_specular(p, d, n, u_k_st));
-    }
+#ifdef SHADING_THESIS
     return weight * (u_stone_colour * light_specular(p, d, n, u_k_st) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
+#else
+    vec3 transmittance = exp(-u_absorption * path_mm);
+    return weight * transmittance * (env + light_specular(p, d, n, u_k_st));
+#endif
 }

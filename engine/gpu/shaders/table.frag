@@ -2,15 +2,14 @@
 // pixel of up to two stored views (q = M p: roll, zoom and symmetry as an image map), read its ray-list
 // (first reflection, then the exit rays), bring every ray into the stone frame (the view
 // was folded by a symmetry g: stone = g^T stored) and shade it with shading.glsl. Two views
-// are blended by weight (between stored directions); one view is the nearest-view method.
+// are blended by weight (between stored directions, TWO_VIEWS); one view is the nearest-view
+// method. FIRE_FIRST_ORDER: dispersion from each ray's d(dir)/dn (program_variants.hpp).
 out vec4 o_colour;
 
-uniform int u_views;        // 1 or 2
 uniform float u_blend;      // weight of view 0; view 1 gets 1 - u_blend
 uniform float u_field_mm;   // the stored views' image side, mm through the centre
 uniform float u_image_scale;  // image-plane mm per unit of u_cam_half (1, or D for perspective)
 uniform vec3 u_dn_channel;  // n(channel) - n(D) for R, G, B: dispersion from d(dir)/dn
-uniform int u_dispersion;
 
 // One stored view: pixels (RG32UI: first ray, ray count; row 0 = the image's top row),
 // rays a (RGBA32F: direction, weight), rays b (position mm, path mm), rays c (d dir/dn, facet).
@@ -54,15 +53,14 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
             colour += shade_reflected(pos, d, n, a.w);
             continue;
         }
-        vec3 env;
-        if (u_dispersion == 1) {
-            vec3 dn = to_stone * c.xyz;
-            env = vec3(environment(pos, normalize(d + dn * u_dn_channel.r)).r,
-                       environment(pos, normalize(d + dn * u_dn_channel.g)).g,
-                       environment(pos, normalize(d + dn * u_dn_channel.b)).b);
-        } else {
-            env = environment(pos, d);
-        }
+#ifdef FIRE_FIRST_ORDER
+        vec3 dn = to_stone * c.xyz;
+        vec3 env = vec3(environment(pos, normalize(d + dn * u_dn_channel.r)).r,
+                        environment(pos, normalize(d + dn * u_dn_channel.g)).g,
+                        environment(pos, normalize(d + dn * u_dn_channel.b)).b);
+#else
+        vec3 env = environment(pos, d);
+#endif
         colour += shade_exit(pos, d, n, a.w, b.w, env);
     }
     return true;
@@ -74,12 +72,14 @@ void main() {
     vec3 c1 = vec3(0.0);
     bool hit0 = shade_view(p, u_pixels0, u_rays_a0, u_rays_b0, u_rays_c0, u_image_map0,
                            u_to_stone0, u_side0, c0);
+#ifdef TWO_VIEWS
+    bool hit1 = shade_view(p, u_pixels1, u_rays_a1, u_rays_b1, u_rays_c1, u_image_map1,
+                           u_to_stone1, u_side1, c1);
+    float w0 = u_blend;
+#else
     bool hit1 = false;
-    if (u_views > 1) {
-        hit1 = shade_view(p, u_pixels1, u_rays_a1, u_rays_b1, u_rays_c1, u_image_map1,
-                          u_to_stone1, u_side1, c1);
-    }
-    float w0 = u_views > 1 ? u_blend : 1.0;
+    float w0 = 1.0;
+#endif
     float w1 = 1.0 - w0;
     float coverage = (hit0 ? w0 : 0.0) + (hit1 ? w1 : 0.0);
     if (coverage <= 0.0) discard;

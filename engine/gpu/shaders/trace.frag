@@ -20,10 +20,15 @@ uniform float u_min_weight;
 uniform int u_thesis_weights;  // 1: constant R/T factors; 0: exact Fresnel
 uniform float u_r_factor;
 uniform float u_t_factor;
-// 0: one index; 1: first order, exit directions moved by d(direction)/dn (n(channel) - n)
-// as the table method does; 2: exact, every channel traced at its own index.
-uniform int u_dispersion;
 uniform vec3 u_ior_channel;  // n at the channels' dominant wavelengths
+// Fire (compiled in, program_variants.hpp): none by default; FIRE_FIRST_ORDER moves exit
+// directions by d(direction)/dn (n(channel) - n) as the table method does; FIRE_EXACT traces
+// every channel at its own index.
+#ifdef FIRE_FIRST_ORDER
+const bool kFirstOrder = true;
+#else
+const bool kFirstOrder = false;
+#endif
 
 // Weight shares of an interaction at incidence cosine cos_i from index n1 into n2
 // (optics/fresnel.cpp; tracer.cpp split_weight). x: reflected, y: transmitted.
@@ -150,10 +155,10 @@ vec3 refraction_derivative(vec3 d, vec3 dd, vec3 n, float eta, float d_eta) {
 }
 
 // Everything that leaves a convex stone from the ray refracted in at `entry` through `facet`
-// with weight `weight`, traced at index `ior`. With `first_order`, each exit's colour channels
-// are looked up along the direction moved by d(direction)/dn times (u_ior_channel - ior).
-vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float ior,
-                   bool first_order) {
+// with weight `weight`, traced at index `ior`. With first-order fire, each exit's colour
+// channels are looked up along the direction moved by d(direction)/dn times
+// (u_ior_channel - ior); dd is d(d)/dn.
+vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float ior) {
     vec3 colour = vec3(0.0);
     vec3 o = entry;
     float path = 0.0;
@@ -177,7 +182,7 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
         if (split.y > 0.0 && refract_ray(d, -n, ior, kAir, out_dir) &&
             out_weight >= u_min_weight) {
             vec3 env;
-            if (first_order) {
+            if (kFirstOrder) {
                 vec3 dd_out = refraction_derivative(d, dd, -n, ior, 1.0);
                 env = vec3(environment(p, normalize(out_dir + dd_out * dn_channel.r)).r,
                            environment(p, normalize(out_dir + dd_out * dn_channel.g)).g,
@@ -189,7 +194,7 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
         }
         o = p;
         d = reflect(d, n);
-        if (first_order) dd -= 2.0 * dot(dd, n) * n;  // the derivative only where it is used
+        if (kFirstOrder) dd -= 2.0 * dot(dd, n) * n;  // the derivative only where it is used
         weight *= split.x;
         from = exit_facet;
     }
@@ -302,24 +307,25 @@ void main() {
 
 #ifndef NON_CONVEX
     // A convex stone holds one branch: the internal reflection; exit rays cannot come back.
-    if (u_dispersion == 2) {
-        for (int c = 0; c < 3; ++c) {
-            float ior = u_ior_channel[c];
-            vec2 s = split_weight(-dot(direction, n), kAir, ior);
-            vec3 d;
-            if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
-                colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior, false)[c];
-            }
+#ifdef FIRE_EXACT
+    for (int c = 0; c < 3; ++c) {
+        float ior = u_ior_channel[c];
+        vec2 s = split_weight(-dot(direction, n), kAir, ior);
+        vec3 d;
+        if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
+            colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior)[c];
         }
-    } else if (refracted && split.y > 0.0) {
-        bool first_order = u_dispersion == 1;
+    }
+#else
+    if (refracted && split.y > 0.0) {
         // d(inward)/dn at the entry: eta = 1/n, d eta/dn = -eta^2.
         float eta = kAir / u_ior;
-        vec3 dd = first_order
+        vec3 dd = kFirstOrder
                       ? refraction_derivative(direction, vec3(0.0), n, eta, -eta * eta)
                       : vec3(0.0);
-        colour += follow_inside(entry, inward, dd, facet, split.y, u_ior, first_order);
+        colour += follow_inside(entry, inward, dd, facet, split.y, u_ior);
     }
+#endif
 #else
     float t;
     Branch stack[kMaxBranches];

@@ -1,0 +1,28 @@
+#include "gpu/program_variants.hpp"
+
+#include "gpu/program_catalog.hpp"
+
+namespace gem::gpu {
+
+std::vector<std::string> feature_defines(std::uint32_t features) {
+    static constexpr const char* kDefines[] = {"SHADING_THESIS", "CUBE_AT_INFINITY",
+                                               "FIRE_FIRST_ORDER", "FIRE_EXACT", "TWO_VIEWS"};
+    std::vector<std::string> defines;
+    for (std::uint32_t bit = 0; bit < std::size(kDefines); ++bit) {
+        if ((features & (1u << bit)) != 0) defines.emplace_back(kDefines[bit]);
+    }
+    return defines;
+}
+
+ProgramVariants::ProgramVariants(std::string name, std::vector<std::string> defines)
+    : name_(std::move(name)), defines_(std::move(defines)) {}
+
+Result<const Program*> ProgramVariants::build(std::uint32_t features) {
+    std::vector<std::string> defines = defines_;
+    for (std::string& define : feature_defines(features)) defines.push_back(std::move(define));
+    auto program = build_program(name_, defines);
+    if (!program) return Error{program.error()};
+    return &built_.emplace(features, std::move(program).value()).first->second;
+}
+
+}  // namespace gem::gpu

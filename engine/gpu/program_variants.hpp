@@ -1,0 +1,62 @@
+#pragma once
+// Programs that differ only in which code paths are compiled in. A SIMD rasteriser such as
+// llvmpipe runs both sides of a branch on a uniform under a lane mask, so a uniform that picks
+// a path costs every path it could pick: the trace shader paid for the first-order fire's
+// three environment lookups, the thesis shading's second set of light lobes and the cube at
+// infinity's second lookup on every exit, and drew a frame in 1.9 times the time of the
+// program holding only its own paths. So each path a draw may skip is a feature, and every
+// combination of features a draw asks for is its own program, built the first time it is
+// asked for and kept.
+
+#include <cstdint>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "gpu/program.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+// Feature bits and the #define each compiles in (the shaders test them with #ifdef).
+enum ShaderFeature : std::uint32_t {
+    kThesisShading = 1u << 0,   // SHADING_THESIS: the thesis' R/T-factor shading (shading.glsl)
+    kCubeAtInfinity = 1u << 1,  // CUBE_AT_INFINITY: the virtual cube infinitely far
+    kFireFirstOrder = 1u << 2,  // FIRE_FIRST_ORDER: exit directions moved per channel by d/dn
+    kFireExact = 1u << 3,       // FIRE_EXACT: each channel traced at its own index (trace)
+    kTwoViews = 1u << 4,        // TWO_VIEWS: a blend of two stored views (table)
+};
+inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfinity;
+
+// The #defines of `features`, in bit order.
+std::vector<std::string> feature_defines(std::uint32_t features);
+
+class ProgramVariants {
+  public:
+    ProgramVariants() = default;
+    // `name` is a program of the catalogue (program_catalog.hpp), `defines` added to every
+    // variant (e.g. the unrolled exit planes).
+    ProgramVariants(std::string name, std::vector<std::string> defines);
+
+    // The variant with exactly `features`; built on the first ask, when `prepare` is called
+    // once on it (e.g. to attach a uniform block). Later asks find it without allocating.
+    template <class Prepare>
+    Result<const Program*> get(std::uint32_t features, Prepare&& prepare) {
+        if (auto found = built_.find(features); found != built_.end()) return &found->second;
+        auto program = build(features);
+        if (!program) return program;
+        prepare(*program.value());
+        return program;
+    }
+
+    const std::string& name() const { return name_; }
+
+  private:
+    Result<const Program*> build(std::uint32_t features);
+
+    std::string name_;
+    std::vector<std::string> defines_;
+    std::map<std::uint32_t, Program> built_;  // node-based: a variant never moves
+};
+
+}  // namespace gem::gpu
