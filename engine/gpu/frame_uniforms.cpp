@@ -60,7 +60,8 @@ std::uint32_t shading_features(const StoneFrame& frame) {
     std::uint32_t features = 0;
     if (frame.shading.model == ShadingModel::thesis) features |= kThesisShading;
     if (frame.cube_half_mm <= 0.0) features |= kCubeAtInfinity;
-    return features;
+    const auto lights = std::min<std::size_t>(frame.shading.lights.size(), kMaxLights);
+    return features | light_count_feature(static_cast<int>(lights));
 }
 
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
@@ -77,7 +78,7 @@ void set_shading_uniforms(const Program& program, const StoneFrame& frame, int u
             glm::vec4(glm::vec3(s.lights[i].position), s.lights[i].directional ? 0.0f : 1.0f);
         colour[i] = glm::vec3(s.lights[i].colour);
     }
-    program.set("u_light_count", lights);
+    program.set("u_light_count", lights);  // phong's loop; shading.glsl compiles it in
     glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
     glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
     program.set("u_k_s", static_cast<float>(s.k_s));

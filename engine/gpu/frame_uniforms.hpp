@@ -32,7 +32,7 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
 glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 
 // The shading.glsl features `frame` needs compiled in (program_variants.hpp: the thesis'
-// shading model, a cube at infinity).
+// shading model, a cube at infinity, the number of lights).
 std::uint32_t shading_features(const StoneFrame& frame);
 
 // Binds the environment cube to texture unit `unit`.

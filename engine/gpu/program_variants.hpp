@@ -26,9 +26,19 @@ enum ShaderFeature : std::uint32_t {
     kFireExact = 1u << 3,       // FIRE_EXACT: each channel traced at its own index (trace)
     kTwoViews = 1u << 4,        // TWO_VIEWS: a blend of two stored views (table)
 };
-inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfinity;
+// Bits 5-7 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
+inline constexpr std::uint32_t kLightCountShift = 5;
+inline constexpr std::uint32_t kLightCountBits = 7u << kLightCountShift;
+constexpr std::uint32_t light_count_feature(int lights) {
+    return static_cast<std::uint32_t>(lights) << kLightCountShift;
+}
+constexpr int light_count_of(std::uint32_t features) {
+    return static_cast<int>((features & kLightCountBits) >> kLightCountShift);
+}
+inline constexpr std::uint32_t kShadingFeatures =
+    kThesisShading | kCubeAtInfinity | kLightCountBits;
 
-// The #defines of `features`, in bit order.
+// The #defines of `features`, in bit order, the light count last (none for no lights).
 std::vector<std::string> feature_defines(std::uint32_t features);
 
 class ProgramVariants {

@@ -7,6 +7,7 @@
 #include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "gpu_test_support.hpp"
+#include "render/lights.hpp"
 
 namespace gem {
 namespace {
@@ -25,6 +26,7 @@ std::vector<gpu::ProgramSpec> every_variant(const gpu::ProgramSpec& spec) {
     std::vector<gpu::ProgramSpec> variants;
     for (std::uint32_t features = 0; features <= spec.features; ++features) {
         if ((features & ~spec.features) != 0) continue;
+        if (gpu::light_count_of(features) > kMaxLights) continue;
         gpu::ProgramSpec variant = spec;
         for (std::string& define : gpu::feature_defines(features)) {
             variant.defines.push_back(std::move(define));
@@ -47,8 +49,9 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
             ++built;
         }
     }
-    // table, table_non_convex and trace test four features (16 each), trace_non_convex two.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 4 + 16 + 16 + 16 + 4);
+    // table, table_non_convex and trace test four switches (16 each), trace_non_convex two,
+    // each with 0 .. 4 lights.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 4 + 5 * (16 + 16 + 16 + 4));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }
@@ -59,6 +62,9 @@ TEST(GpuPrograms, FeatureDefinesFollowTheBits) {
               (std::vector<std::string>{"SHADING_THESIS", "TWO_VIEWS"}));
     EXPECT_EQ(gpu::feature_defines(gpu::kCubeAtInfinity | gpu::kFireFirstOrder | gpu::kFireExact),
               (std::vector<std::string>{"CUBE_AT_INFINITY", "FIRE_FIRST_ORDER", "FIRE_EXACT"}));
+    EXPECT_EQ(gpu::feature_defines(gpu::kTwoViews | gpu::light_count_feature(3)),
+              (std::vector<std::string>{"TWO_VIEWS", "LIGHT_COUNT 3"}));
+    EXPECT_EQ(gpu::light_count_of(gpu::kThesisShading | gpu::light_count_feature(4)), 4);
 }
 
 TEST(GpuPrograms, StoneBlockHasTheLayoutTheUploadWrites) {
