@@ -153,7 +153,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
             auto moved = Camera::make(jittered, r.stone_radius_mm(), scene.width, scene.height);
             if (!moved) return Error{moved.error()};
             hdr.value().bind();
-            auto drawn = r.render(moved.value(), false);
+            auto drawn = r.render(moved.value(), gpu::FrameWait::none);
             if (!drawn) return drawn;
             auto finished = hdr.value().finish(target.value());
             if (!finished) return Error{finished.error()};

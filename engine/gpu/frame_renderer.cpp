@@ -94,7 +94,7 @@ Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
     return update_ring_cube();
 }
 
-Result<FrameStats> FrameRenderer::render(const Camera& camera, bool finish) {
+Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     FrameStats stats;
@@ -103,6 +103,11 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, bool finish) {
     glClear(GL_DEPTH_BUFFER_BIT);
     auto ok = background_->draw(camera, *environment_cube_, setup_.background_colour);
     if (!ok) return Error{ok.error()};
+    const auto ms_since = [](Clock::time_point t) {
+        return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
+    };
+    if (wait == FrameWait::passes) glFinish();
+    const auto stone_start = Clock::now();
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
     StoneFrame frame{&stone(), setup_.material, camera,          setup_.shading,
@@ -119,12 +124,16 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, bool finish) {
             break;
     }
     if (!ok) return Error{ok.error()};
+    if (wait == FrameWait::passes) {
+        glFinish();
+        stats.stone_ms = ms_since(stone_start);
+    }
     if (ring_) {
         ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
         if (!ok) return Error{ok.error()};
     }
-    if (finish) glFinish();
-    stats.cpu_ms = std::chrono::duration<double, std::milli>(Clock::now() - start).count();
+    if (wait != FrameWait::none) glFinish();
+    stats.cpu_ms = ms_since(start);
     auto clean = gl_check(std::string("frame (") + to_string(setup_.method) + ")");
     if (!clean) return Error{clean.error()};
     return stats;

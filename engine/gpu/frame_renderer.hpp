@@ -41,8 +41,16 @@ struct FrameSetup {
     const RingMesh* ring = nullptr;              // optional jewellery around the stone
 };
 
+// What render() waits for: nothing (a display's swap paces it), the whole frame (timing), or
+// each pass too (benchmarks: the stone pass timed alone; the extra waits cost time).
+enum class FrameWait { none, frame, passes };
+
 struct FrameStats {
     double cpu_ms = 0.0;  // from the start of the frame to glFinish returning
+    // The stone pass alone, between a glFinish after the background and one after the stone
+    // (FrameWait::passes only; 0 otherwise): what the method costs, without the picture's
+    // other passes.
+    double stone_ms = 0.0;
     TableFrameStats table;
 };
 
@@ -53,8 +61,8 @@ class FrameRenderer {
     FrameRenderer& operator=(FrameRenderer&&) noexcept;
     ~FrameRenderer();
 
-    // Draws into the bound framebuffer (viewport set); `finish` waits for the GPU (timing).
-    Result<FrameStats> render(const Camera& camera, bool finish);
+    // Draws into the bound framebuffer (viewport set), waiting for the GPU as `wait` says.
+    Result<FrameStats> render(const Camera& camera, FrameWait wait);
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 

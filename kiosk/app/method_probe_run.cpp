@@ -55,7 +55,7 @@ std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
                                     table->level_for(table->database().camera().field_mm /
                                                      camera.value().pixel_size()));
         }
-        auto stats = renderer.render(camera.value(), false);
+        auto stats = renderer.render(camera.value(), gpu::FrameWait::none);
         const bool finished = stats && scene_picture.finish(target);
         glFinish();
         const double ms =

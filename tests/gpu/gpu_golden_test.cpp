@@ -75,7 +75,7 @@ Image render_case(const GoldenCase& c) {
     cs.zoom = c.ring ? 0.6 : 1.0;
     auto camera = Camera::make(cs, renderer.value().stone_radius_mm(), kSize, kSize);
     EXPECT_TRUE(camera.ok()) << camera.error();
-    auto stats = renderer.value().render(camera.value(), true);
+    auto stats = renderer.value().render(camera.value(), gpu::FrameWait::frame);
     EXPECT_TRUE(stats.ok()) << stats.error();
     return target.value().read();
 }

@@ -87,7 +87,7 @@ Image draw_diamond(int size, int samples, glm::dvec2 shift = glm::dvec2(0.0)) {
     EXPECT_TRUE(hdr.ok()) << hdr.error();
     auto picture = gpu::RenderTarget::make(size, size);
     hdr.value().bind();
-    EXPECT_TRUE(renderer.value().render(camera, true).ok());
+    EXPECT_TRUE(renderer.value().render(camera, gpu::FrameWait::frame).ok());
     EXPECT_TRUE(hdr.value().finish(picture.value()).ok());
     return picture.value().read();
 }

@@ -54,7 +54,7 @@ Result<std::vector<GpuFrame>> render_gpu(const Scene& scene, const Environment& 
         GpuFrame frame;
         std::vector<double> ms;
         for (int f = -1; f < frames; ++f) {  // frame −1: program, textures, first decode
-            auto stats = renderer.value().render(camera.value(), true);
+            auto stats = renderer.value().render(camera.value(), gem::gpu::FrameWait::frame);
             if (!stats) return Error{stats.error()};
             if (f < 0) continue;
             ms.push_back(stats.value().cpu_ms);

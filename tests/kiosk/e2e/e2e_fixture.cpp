@@ -205,7 +205,7 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
         picture.bind();
         glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        auto drawn = renderer.render(camera.value(), true);
+        auto drawn = renderer.render(camera.value(), gpu::FrameWait::frame);
         if (!drawn) return Error{drawn.error()};
         auto finished = picture.finish(target.value());
         if (!finished) return Error{finished.error()};
