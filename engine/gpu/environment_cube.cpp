@@ -77,6 +77,10 @@ Result<EnvironmentCube> EnvironmentCube::from_environment(const Environment& env
         glTexSubImage2D(GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, 0, 0, 0, face_size, face_size,
                         GL_RGBA, GL_FLOAT, texels.data());
     }
+    // Box-filtered levels for blurred lookups (the ring's rough metal); sharp lookups name
+    // level 0.
+    glGenerateMipmap(GL_TEXTURE_CUBE_MAP);
+    glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MIN_FILTER, GL_LINEAR_MIPMAP_LINEAR);
     auto ok = gl_check("environment cube: upload");
     if (!ok) return Error{ok.error()};
     return cube;

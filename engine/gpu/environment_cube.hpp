@@ -22,7 +22,8 @@ class EnvironmentCube {
     // can render to half floats (EXT_color_buffer_half_float / _float), else SRGB8_ALPHA8,
     // which ES 3.0 can always render to but which clips radiance above 1.
     static Result<EnvironmentCube> allocate(int face_size);
-    // Every texel set to `environment`'s radiance toward the texel's centre.
+    // Every texel set to `environment`'s radiance toward the texel's centre, with box-filtered
+    // mip levels below (a rendered cube has level 0 only).
     static Result<EnvironmentCube> from_environment(const Environment& environment, int face_size);
 
     GLuint texture() const { return texture_.get(); }

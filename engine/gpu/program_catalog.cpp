@@ -37,7 +37,7 @@ std::vector<ProgramSpec> all_program_specs() {
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
         {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}},
         // The ring's metal, physically based (ring_renderer.hpp).
-        {"ring", {"ring.vert"}, {"ring.frag"}, {}},
+        {"ring", {"ring.vert"}, {"ring.frag"}, {}, kLightCountBits},
         // The picture from HDR radiance to the display: glare pyramid, tone curve
         // (hdr_picture.hpp, bloom_pass.hpp).
         {"bloom_down", {"fullscreen.vert"}, {"bloom_down.frag"}, {}},

@@ -59,6 +59,12 @@ class ProgramVariants {
         return program;
     }
 
+    // A variant built before, or nullptr (for const users that build every variant up front).
+    const Program* find(std::uint32_t features) const {
+        const auto found = built_.find(features);
+        return found != built_.end() ? &found->second : nullptr;
+    }
+
     const std::string& name() const { return name_; }
 
   private:

@@ -54,7 +54,7 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm) {
     return glm::mat4(m);
 }
 
-RingRenderer::RingRenderer(Program ring, Program background)
+RingRenderer::RingRenderer(ProgramVariants ring, Program background)
     : ring_(std::move(ring)), background_(std::move(background)) {}
 
 Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
@@ -69,11 +69,15 @@ Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
                          std::to_string(mesh.positions.size()) + " vertices"};
         }
     }
-    auto ring = build_program("ring");
-    if (!ring) return Error{ring.error()};
+    // Every light count up front: draws are const and must not build.
+    ProgramVariants ring("ring", {});
+    for (int lights = 0; lights <= kMaxLights; ++lights) {
+        auto built = ring.get(light_count_feature(lights), [](const Program&) {});
+        if (!built) return Error{built.error()};
+    }
     auto background = build_program("background");
     if (!background) return Error{background.error()};
-    RingRenderer r(std::move(ring).value(), std::move(background).value());
+    RingRenderer r(std::move(ring), std::move(background).value());
     r.f0_ = mesh.f0;
     r.roughness_ = mesh.roughness;
     r.radius_mm_ = mesh.radius_mm();
@@ -102,16 +106,18 @@ Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
 void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
                              bool eye_at_infinity, const ShadingSettings& lights,
                              const EnvironmentCube& environment) const {
-    ring_.use();
-    ring_.set("u_view_projection", view_projection);
-    ring_.set("u_eye", eye);
-    ring_.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
-    ring_.set("u_f0", f0_);
-    ring_.set("u_roughness", roughness_);
+    const int count = std::min<int>(static_cast<int>(lights.lights.size()), kMaxLights);
+    const Program& ring = *ring_.find(light_count_feature(count));
+    ring.use();
+    ring.set("u_view_projection", view_projection);
+    ring.set("u_eye", eye);
+    ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
+    ring.set("u_f0", f0_);
+    ring.set("u_roughness", roughness_);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
-    ring_.set("u_environment", 0);
-    const int count = std::min<int>(static_cast<int>(lights.lights.size()), kMaxLights);
+    ring.set("u_environment", 0);
+    ring.set("u_environment_face", static_cast<float>(environment.face_size()));
     glm::vec4 position[kMaxLights] = {};
     glm::vec3 colour[kMaxLights] = {};
     for (int i = 0; i < count; ++i) {
@@ -119,9 +125,8 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
         position[i] = glm::vec4(glm::vec3(l.position), l.directional ? 0.0f : 1.0f);
         colour[i] = glm::vec3(l.colour);
     }
-    ring_.set("u_light_count", count);
-    glUniform4fv(ring_.uniform("u_light_position"), kMaxLights, &position[0].x);
-    glUniform3fv(ring_.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    glUniform4fv(ring.uniform("u_light_position"), kMaxLights, &position[0].x);
+    glUniform3fv(ring.uniform("u_light_colour"), kMaxLights, &colour[0].x);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glEnable(GL_DEPTH_TEST);

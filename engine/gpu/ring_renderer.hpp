@@ -8,6 +8,7 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
+#include "gpu/program_variants.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "render/camera.hpp"
 #include "render/shading.hpp"
@@ -40,11 +41,11 @@ class RingRenderer {
                                          const ShadingSettings& lights_from) const;
 
   private:
-    RingRenderer(Program ring, Program background);
+    RingRenderer(ProgramVariants ring, Program background);
     void draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye, bool eye_at_infinity,
                    const ShadingSettings& lights, const EnvironmentCube& environment) const;
 
-    Program ring_;
+    ProgramVariants ring_;  // one per light count, all built by make()
     Program background_;
     VertexArray vertex_array_;
     Buffer positions_;

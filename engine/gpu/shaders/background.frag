@@ -15,5 +15,5 @@ void main() {
     vec3 origin;
     vec3 direction;
     camera_ray(v_ndc, origin, direction);
-    o_colour = vec4(texture(u_environment, direction).rgb, 1.0);
+    o_colour = vec4(textureLod(u_environment, direction, 0.0).rgb, 1.0);
 }

@@ -43,7 +43,7 @@ void main() {
         float r_v = max(dot(reflect(-l, n), v), 0.0);
         specular += u_light_colour[i] * (u_k_s * pow(r_v, u_h));
     }
-    vec3 ambient = texture(u_environment, n).rgb;
+    vec3 ambient = textureLod(u_environment, n, 0.0).rgb;
     vec3 colour = u_stone_colour * (kAmbient * ambient + kDiffuse * diffuse) + specular;
     o_colour = vec4(colour, clamp(1.0 - u_alpha, 0.0, 1.0));
 }

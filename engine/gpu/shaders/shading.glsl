@@ -36,14 +36,16 @@ const int kTexWidth = 1024;  // texel_array.hpp: kTextureWidth
 ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
 
 // Where the ray from p along d meets the virtual cube, as a cube-map lookup direction: the
-// six images were taken from the stone's centre, so the exit point matters, not only d.
+// six images were taken from the stone's centre, so the exit point matters, not only d. The
+// sharp level always: neighbouring pixels' rays diverge inside a stone, and a level chosen
+// from their derivatives would blur the sparkle.
 vec3 environment(vec3 p, vec3 d) {
 #ifdef CUBE_AT_INFINITY
-    return texture(u_environment, d).rgb;
+    return textureLod(u_environment, d, 0.0).rgb;
 #else
     vec3 far_side = (sign(d) * u_cube_half_mm - p) / d;  // per-axis distance to the far face
     float t = min(far_side.x, min(far_side.y, far_side.z));
-    return texture(u_environment, p + max(t, 0.0) * d).rgb;
+    return textureLod(u_environment, p + max(t, 0.0) * d, 0.0).rgb;
 #endif
 }
 
