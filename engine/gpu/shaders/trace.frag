@@ -35,14 +35,13 @@ const bool kFirstOrder = false;
 vec2 split_weight(float cos_i, float n1, float n2) {
     cos_i = clamp(cos_i, 0.0, 1.0);
     float sin_t2 = (n1 / n2) * (n1 / n2) * (1.0 - cos_i * cos_i);
-    if (sin_t2 >= 1.0) return vec2(1.0, 0.0);
-    float cos_t = sqrt(1.0 - sin_t2);
+    float cos_t = sqrt(max(1.0 - sin_t2, 0.0));
     float s = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
     float p = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-    float r = 0.5 * (s * s + p * p);
-    if (r >= 1.0) return vec2(1.0, 0.0);
-    if (u_thesis_weights == 1) return vec2(u_r_factor, u_t_factor);
-    return vec2(r, 1.0 - r);
+    // Selects, not early returns: TIR (where the quotients may be 0/0) reflects everything.
+    float r = sin_t2 >= 1.0 ? 1.0 : min(0.5 * (s * s + p * p), 1.0);
+    bool factors = u_thesis_weights == 1 && r < 1.0;
+    return factors ? vec2(u_r_factor, u_t_factor) : vec2(r, 1.0 - r);
 }
 
 // Snell refraction of d through the surface with normal n facing against d; false on TIR.
