@@ -10,8 +10,9 @@
 // diamond at 256/1024 px every 10°, traced to the same depth. Last, the heart in ruby (not
 // convex: trace tests its triangles instead of walking facets) beside phong.
 //
-//   bench_gpu [--frames N] [--quick]
+//   bench_gpu [--frames N] [--quick] [--only TEXT]
 // --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
+// --only: the views whose name contains TEXT (e.g. "zoom 0.62"), to repeat one comparison.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -182,9 +183,11 @@ Timing run(const Case& c, const View& v, const gem::Stone& stone,
 int main(int argc, char** argv) {
     int frames = 6;
     bool quick = false;
+    std::string only;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) frames = std::atoi(argv[++i]);
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
+        if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
     }
     if (quick) frames = std::min(frames, 3);
     frames = std::max(frames, 1);
@@ -233,6 +236,7 @@ int main(int argc, char** argv) {
     if (quick) subjects.resize(1);
     for (const Subject& st : subjects) {
         for (const View& v : st.views) {
+            if (!only.empty() && std::string(v.name).find(only) == std::string::npos) continue;
             // The stone's pixels at the turn's middle frame (a turn of a few degrees barely moves
             // its outline).
             auto probe = gem::gpu::FrameRenderer::make([&] {
