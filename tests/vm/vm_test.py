@@ -46,6 +46,9 @@ SAME_DB = 35.0
 MARGIN_DB = 5.0
 FIRST_STONE = "oval-sapphire"
 NEW_STONE = "tolkowsky-diamond"
+# A catalogue of one design (a stone description, no database), shown with the exact method.
+DESIGN_STONE = "marquise-garnet"
+DESIGN_CATALOGUE = "designs"
 
 
 class CheckFailed(Exception):
@@ -84,7 +87,8 @@ class Host:
 
     def catalogues(self):
         """first: the sapphire the kiosk starts with; diamond: staff's new catalogue. Small
-        databases (64 and 128 px, 10°): the stone is about 100 px tall on this screen."""
+        databases (64 and 128 px, 10°): the stone is about 100 px tall on this screen. designs:
+        a garnet's stone description only, no tables."""
         root = os.path.join(self.work, "catalogues")
         for folder, stone in (("first", FIRST_STONE), ("diamond", NEW_STONE)):
             directory = os.path.join(root, folder)
@@ -97,6 +101,14 @@ class Host:
             with open(os.path.join(directory, "catalogue.toml"), "w") as f:
                 f.write(f'[catalogue]\nname = "{stone}"\n\n[[stone]]\nname = "{stone}"\n'
                         f'database = "{stone}.gemdb"\nring = "parametric"\n')
+        designs = os.path.join(root, DESIGN_CATALOGUE)
+        os.makedirs(designs, exist_ok=True)
+        shutil.copy(os.path.join(self.args.source_dir, "config", "stones", DESIGN_STONE + ".toml"),
+                    designs)
+        with open(os.path.join(designs, "catalogue.toml"), "w") as f:
+            f.write(f'[catalogue]\nname = "{DESIGN_CATALOGUE}"\n\n[[stone]]\n'
+                    f'name = "{DESIGN_STONE}"\ndesign = "{DESIGN_STONE}.toml"\n'
+                    f'ring = "parametric"\n')
         return root
 
     def picture(self, name, catalogue, replay=None):
@@ -474,9 +486,13 @@ def scenario(args, host, guest, catalogues, figures, choice):
         compare(f"damaged-catalogue-{look + 1}", guest.screenshot("after-damaged"), diamond_start,
                 {"the sapphire": sapphire_start}, args.work_dir)
 
-    # Frames stop; under KVM the shipped watchdog restarts the kiosk.
-    made = 1 + watchdog(args, guest, choice, figures, diamond_start,
-                        {"the sapphire": sapphire_start})
+    # Staff copy a catalogue of designs only: the kiosk shows the garnet at once, traced.
+    design_start = designs(host, guest, catalogues, figures,
+                           {"the diamond": diamond_start, "the sapphire": sapphire_start})
+    others = {"the diamond": diamond_start, "the sapphire": sapphire_start}
+
+    # Frames stop; under KVM the shipped watchdog restarts the kiosk, on the designs.
+    made = 1 + watchdog(args, guest, choice, figures, design_start, others)
     # Every restart so far is one the test caused: none from a watchdog on a working kiosk.
     # (StartLimitBurst=5 in 10 minutes: boot, SIGKILL, watchdog and the legacy step make 4.)
     restarts, = guest.unit("NRestarts")
@@ -485,7 +501,31 @@ def scenario(args, host, guest, catalogues, figures, choice):
                           guest.shell.run("journalctl -u gemkiosk.service -b -o cat --no-pager",
                                           check=False))
 
-    legacy(guest, figures, diamond_start, {"the sapphire": sapphire_start})
+    legacy(guest, figures, design_start, others)
+
+
+def designs(host, guest, catalogues, figures, others):
+    """A catalogue of designs only (a stone description, no .gemdb) copied in by staff: the
+    kiosk validates it, says so and shows the stone drawn by the exact method, as the host's
+    kiosk draws the same catalogue. Figures: seconds from the copy to the kiosk's line and to
+    the stone on screen. Returns the host's picture of it, for the steps after."""
+    since = guest.shell.run("date +%s").strip()
+    copied_at = float(guest.shell.run(
+        f"runuser -u clerk -- cp -r /srv/vm-test/catalogues/{DESIGN_CATALOGUE} "
+        "/var/lib/gemkiosk/inbox/autumn && cat /proc/uptime").split()[0])
+    line = guest.wait_for_log(f"showing catalogue '{DESIGN_CATALOGUE}'", timeout_s=180,
+                              since=since)
+    figures["design_to_log_s"] = float(guest.shell.run("cat /proc/uptime").split()[0]) - copied_at
+    log(f"the kiosk says: {line}")
+    expected = host.picture("design-start", os.path.join(catalogues, DESIGN_CATALOGUE))
+    shown = guest.wait_for_picture("design", expected, others, timeout_s=300)
+    figures["design_on_screen_s"] = (float(guest.shell.run("cat /proc/uptime").split()[0]) -
+                                     copied_at)
+    log(f"the garnet's design on screen {figures['design_on_screen_s']:.1f} s after the copy "
+        f"(the kiosk's line after {figures['design_to_log_s']:.1f} s)")
+    no_warnings(guest, since, "a catalogue of designs")
+    del shown  # compared above; later steps compare with the host's picture
+    return expected
 
 
 def stop_and_measure(guest, figures, key):
