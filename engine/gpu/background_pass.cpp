@@ -17,13 +17,16 @@ Result<BackgroundPass> BackgroundPass::make() {
 
 Result<bool> BackgroundPass::draw(const Camera& camera, const EnvironmentCube& environment,
                                   std::optional<glm::vec3> colour) const {
+    if (colour) {
+        glClearColor(colour->x, colour->y, colour->z, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        return gl_check("background clear");
+    }
     program_.use();
     set_camera_uniforms(program_, camera, 1.0);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
     program_.set("u_environment", 0);
-    program_.set("u_use_environment", colour ? 0 : 1);
-    program_.set("u_background_colour", colour.value_or(glm::vec3(0.0f)));
     glDisable(GL_BLEND);
     glDisable(GL_DEPTH_TEST);
     glBindVertexArray(empty_.get());

@@ -35,7 +35,9 @@ struct FrameSetup {
     TraceSettings trace;  // trace: depth, weights, threshold
     TraceDispersion trace_dispersion = TraceDispersion::none;
     TableOptions table;
-    const Environment* environment = nullptr;    // what surrounds everything
+    // What surrounds everything; must outlive the renderer (an orthographic frame's background
+    // is its radiance along the view).
+    const Environment* environment = nullptr;
     int cube_face = 512;                         // virtual-cube face size, texels
     std::optional<glm::vec3> background_colour;  // else the environment shows behind
     const RingMesh* ring = nullptr;              // optional jewellery around the stone

@@ -194,7 +194,6 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_CUBE_MAP, background.texture());
         background_.set("u_environment", 0);
-        background_.set("u_use_environment", 1);
         glDisable(GL_BLEND);
         glDisable(GL_DEPTH_TEST);
         glBindVertexArray(vertex_array_.get());  // no attributes: fullscreen.vert needs none

@@ -106,7 +106,7 @@ TEST(GpuPrograms, CompileErrorCarriesTheLog) {
     auto program = gpu::Program::build({"undeclared",
                                         {"fullscreen.vert"},
                                         {"camera.glsl", "background.frag"},
-                                        {"u_background_colour 1.0 +"}});
+                                        {"u_environment 1.0 +"}});
     ASSERT_FALSE(program.ok());
     EXPECT_NE(program.error().find("fragment shader camera.glsl+background.frag"),
               std::string::npos)

@@ -72,10 +72,16 @@ bool entry_is_ambiguous(const Camera& camera, const Tracer& tracer, double ior,
 
 // Draws a solid magenta plane through the stone's centre (window depth 0.5: the fullscreen
 // triangle's z = 0) with GL_LESS over what is in the target.
-void draw_centre_plane(const gpu::Program& plane, const gpu::VertexArray& empty) {
+// A full-screen plane at the centre's depth in magenta: the background program over a
+// uniformly magenta cube.
+void draw_centre_plane(const gpu::Program& plane, const gpu::EnvironmentCube& magenta,
+                       const gpu::VertexArray& empty) {
     plane.use();
-    plane.set("u_use_environment", 0);
-    plane.set("u_background_colour", glm::vec3(1.0f, 0.0f, 1.0f));
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, magenta.texture());
+    plane.set("u_environment", 0);
+    plane.set("u_cam_forward",
+              glm::vec3(0.0f, 0.0f, 1.0f));  // any direction: every face is magenta
     glDisable(GL_BLEND);
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
@@ -162,7 +168,10 @@ std::optional<Comparison> compare(const Case& c) {
     drawn = method.value().draw(frame, c.trace);
     EXPECT_TRUE(drawn.ok()) << drawn.error();
     const gpu::VertexArray empty = gpu::make_vertex_array();
-    draw_centre_plane(plane.value(), empty);
+    auto magenta = gpu::EnvironmentCube::from_environment(Environment::uniform({1.0, 0.0, 1.0}), 1);
+    EXPECT_TRUE(magenta.ok()) << magenta.error();
+    if (!magenta.ok()) return std::nullopt;
+    draw_centre_plane(plane.value(), magenta.value(), empty);
     const Image cut = target.value().read();
     auto clean = gpu::gl_check("trace test");
     EXPECT_TRUE(clean.ok()) << clean.error();
