@@ -217,8 +217,16 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     const bool dispersion = database_->params().dispersion;
     const std::uint32_t features = shading_features(frame) | (dispersion ? kFireFirstOrder : 0u) |
                                    (v1 != nullptr ? kTwoViews : 0u);
-    auto chosen = programs_.get(features, [&](const Program& built) { stone_->attach(built); });
+    const auto attach = [&](const Program& built) { stone_->attach(built); };
+    auto chosen = programs_.get(features, attach);
     if (!chosen) return Error{chosen.error()};
+    if (options_.blend) {
+        // A blend draws one view on a stored direction and two between them: both programs
+        // are built at the first draw, so a turn never waits for a compile (a map lookup
+        // after that).
+        auto other = programs_.get(features ^ kTwoViews, attach);
+        if (!other) return Error{other.error()};
+    }
     const Program& p = *chosen.value();
     p.use();
     set_camera_uniforms(p, camera, frame.scene_radius_mm);
