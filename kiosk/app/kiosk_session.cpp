@@ -437,8 +437,9 @@ double KioskSession::draw_stone(double now_s, FrameRecord& record) {
             table->level_for(table->database().camera().field_mm / camera.value().pixel_size()));
     }
     // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
-    auto stats = renderer.render(camera.value(), config_.display.backend != "drm" ? gpu::FrameWait::frame
-                                                                          : gpu::FrameWait::none);
+    auto stats =
+        renderer.render(camera.value(), config_.display.backend != "drm" ? gpu::FrameWait::frame
+                                                                         : gpu::FrameWait::none);
     if (!stats) {
         log_error(stats.error());
         return 0.0;

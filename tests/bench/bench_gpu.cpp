@@ -218,8 +218,8 @@ int main(int argc, char** argv) {
         {"trace 7 fire exact", Method::trace, false, kTraceDepth, TraceDispersion::exact}};
     if (quick) views = {views[0], views[3]};
 
-    std::printf("%-18s %-24s %9s %9s %9s %8s %10s %8s\n", "view", "method", "ms/frame",
-                "stone ms", "stone Mpx", "stone %", "ms/Mpx", "×phong");
+    std::printf("%-18s %-24s %9s %9s %9s %8s %10s %8s\n", "view", "method", "ms/frame", "stone ms",
+                "stone Mpx", "stone %", "ms/Mpx", "×phong");
     auto heart =
         gem::make_cut(gem::default_cut_params(gem::CutShape::heart), *gem::find_material("ruby"));
     struct Subject {

@@ -110,7 +110,8 @@ void pass_costs(const gem::Stone& stone, const gem::Environment& environment, in
                 hdr.bind();
                 glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
                 glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                const double drawn = must(renderer.render(camera, gem::gpu::FrameWait::frame)).cpu_ms;
+                const double drawn =
+                    must(renderer.render(camera, gem::gpu::FrameWait::frame)).cpu_ms;
                 gem::gpu::FinishTimes t;
                 must(hdr.finish(picture, &t));
                 if (f < 0) continue;
