@@ -9,7 +9,6 @@
 
 #include <fstream>
 
-#include "app/start_view.hpp"
 #include "e2e_fixture.hpp"
 #include "kiosk_process.hpp"
 
@@ -61,16 +60,7 @@ TEST(KioskDesigns, ADesignIsShownAtOnceAndABrokenOneIsLeftOut) {
     // still view's frames to be averaged, as the reference is.
     const Image shown = settled_snapshot(kiosk, dir / "snapshots" / "snapshot.png");
     ASSERT_FALSE(shown.pixels.empty()) << kiosk.log();
-    auto emerald = reference_picture(designs, kiosk::kStartView);
-    ASSERT_TRUE(emerald.ok()) << emerald.error();
-    auto oval = reference_picture(sapphire.value(), kiosk::kStartView);
-    ASSERT_TRUE(oval.ok()) << oval.error();
-    const double as_design = psnr_srgb8(shown, emerald.value());
-    const double as_before = psnr_srgb8(shown, oval.value());
-    std::printf("the delivered design: %.1f dB to its reference, %.1f dB to the stone before\n",
-                as_design, as_before);
-    EXPECT_GT(as_design, 35.0);
-    EXPECT_LT(as_before, as_design - 5.0);
+    expect_shows(shown, designs, sapphire.value(), "the delivered design");
 
     kiosk.signal(SIGTERM);
     EXPECT_EQ(kiosk.wait(30s), 0) << kiosk.log();

@@ -3,6 +3,7 @@
 #include <unistd.h>
 
 #include <GLES3/gl3.h>
+#include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdlib>
@@ -13,6 +14,7 @@
 
 #include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
+#include "app/start_view.hpp"
 #include "app/stone_scene.hpp"
 #include "catalogue/validate.hpp"
 #include "gpu/egl_context.hpp"
@@ -224,6 +226,20 @@ double psnr_srgb8(const Image& a, const Image& b) {
     }
     const double mse = sum / static_cast<double>(x.size());
     return mse == 0.0 ? 99.0 : 10.0 * std::log10(255.0 * 255.0 / mse);
+}
+
+void expect_shows(const Image& shown, const fs::path& expected, const fs::path& instead,
+                  const std::string& what) {
+    auto right = reference_picture(expected, kiosk::kStartView);
+    ASSERT_TRUE(right.ok()) << right.error();
+    auto wrong = reference_picture(instead, kiosk::kStartView);
+    ASSERT_TRUE(wrong.ok()) << wrong.error();
+    const double right_db = psnr_srgb8(shown, right.value());
+    const double wrong_db = psnr_srgb8(shown, wrong.value());
+    std::printf("%s: %.1f dB to %s, %.1f dB to %s\n", what.c_str(), right_db,
+                expected.filename().c_str(), wrong_db, instead.filename().c_str());
+    EXPECT_GT(right_db, 35.0);
+    EXPECT_LT(wrong_db, right_db - 5.0);
 }
 
 }  // namespace gem::kiosk_e2e

@@ -67,4 +67,10 @@ Result<bool> make_context_current();
 // PSNR of the two images' 8-bit sRGB encodings, dB.
 double psnr_srgb8(const Image& a, const Image& b);
 
+// Expects `shown` to be catalogue `expected`'s stone at the start view (above 35 dB: the same
+// renderer drew it) and clearly not `instead`'s (at least 5 dB further off); prints both, after
+// `what`.
+void expect_shows(const Image& shown, const std::filesystem::path& expected,
+                  const std::filesystem::path& instead, const std::string& what);
+
 }  // namespace gem::kiosk_e2e
