@@ -70,20 +70,18 @@ bool hits_triangle(vec3 o, vec3 d, int tri, float limit) {
     float t = dot(e2, r) * inv;
     return t > 0.0 && t < limit;
 }
-#endif
 
-// The thesis' obstruction test: the leaving facet must face the light, and (non-convex stones)
-// no other part of the stone may lie between the exit point and the light.
+// The thesis' obstruction test on a non-convex stone: the leaving facet must face the light,
+// and no other part of the stone may lie between the exit point and the light.
 bool light_blocked(vec3 p, vec3 facet_normal, vec3 to_light, float distance_to_light) {
     if (dot(facet_normal, to_light) <= 0.0) return true;
-#ifdef NON_CONVEX
     vec3 o = p + facet_normal * 1e-4;
     for (int i = 0; i < u_triangle_count; ++i) {
         if (hits_triangle(o, to_light, i, distance_to_light)) return true;
     }
-#endif
     return false;
 }
+#endif
 
 // Sum over the lights of colour * k * (d.L)^h for the ray leaving p along d through a facet
 // with outward normal n. LIGHT_COUNT is compiled in and the loop unrolled: on llvmpipe a loop
@@ -101,8 +99,8 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
         if (light_blocked(p, n, to_light, lp.w > 0.5 ? 1.0 / inverse_length : 1e30)) continue;
         sum += u_light_colour[i] * pow(c, u_h);
 #else
-        // A convex stone blocks a light only by the leaving facet facing away from it (a
-        // select, not light_blocked's branch).
+        // The obstruction test on a convex stone: only the leaving facet can block a light,
+        // by facing away from it (a select, not a branch).
         float unblocked = dot(n, to_light) > 0.0 ? 1.0 : 0.0;
         sum += u_light_colour[i] * (unblocked * pow(c, u_h));
 #endif
