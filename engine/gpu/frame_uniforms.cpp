@@ -60,8 +60,20 @@ std::uint32_t shading_features(const StoneFrame& frame) {
     std::uint32_t features = 0;
     if (frame.shading.model == ShadingModel::thesis) features |= kThesisShading;
     if (frame.cube_half_mm <= 0.0) features |= kCubeAtInfinity;
-    const auto lights = std::min<std::size_t>(frame.shading.lights.size(), kMaxLights);
-    return features | light_count_feature(static_cast<int>(lights));
+    return features | light_count_feature(frame.shading.lights);
+}
+
+void set_light_uniforms(const Program& program, const std::vector<Light>& lights) {
+    glm::vec4 position[kMaxLights] = {};
+    glm::vec3 colour[kMaxLights] = {};
+    const int count = light_count_of(light_count_feature(lights));
+    for (int i = 0; i < count; ++i) {
+        const Light& l = lights[static_cast<std::size_t>(i)];
+        position[i] = glm::vec4(glm::vec3(l.position), l.directional ? 0.0f : 1.0f);
+        colour[i] = glm::vec3(l.colour);
+    }
+    glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
+    glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
 }
 
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
@@ -70,17 +82,7 @@ void set_shading_uniforms(const Program& program, const StoneFrame& frame, int u
     program.set("u_environment", unit);
     program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
     const ShadingSettings& s = frame.shading;
-    const int lights = std::min<int>(static_cast<int>(s.lights.size()), kMaxLights);
-    glm::vec4 position[kMaxLights] = {};
-    glm::vec3 colour[kMaxLights] = {};
-    for (int i = 0; i < lights; ++i) {
-        position[i] =
-            glm::vec4(glm::vec3(s.lights[i].position), s.lights[i].directional ? 0.0f : 1.0f);
-        colour[i] = glm::vec3(s.lights[i].colour);
-    }
-    program.set("u_light_count", lights);  // phong's loop; shading.glsl compiles it in
-    glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
-    glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    set_light_uniforms(program, s.lights);
     program.set("u_k_s", static_cast<float>(s.k_s));
     program.set("u_k_st", static_cast<float>(s.k_st));
     program.set("u_h", static_cast<float>(s.h));

@@ -35,6 +35,10 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 // shading model, a cube at infinity, the number of lights).
 std::uint32_t shading_features(const StoneFrame& frame);
 
+// u_light_position (w = 1: a point, 0: a direction) and u_light_colour of the first kMaxLights
+// lights; their count is compiled into the program (light_count_feature).
+void set_light_uniforms(const Program& program, const std::vector<Light>& lights);
+
 // Binds the environment cube to texture unit `unit`.
 void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit);
 

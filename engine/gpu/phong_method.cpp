@@ -1,32 +1,33 @@
 #include "gpu/phong_method.hpp"
 
 #include "gpu/gl_check.hpp"
-#include "gpu/program_catalog.hpp"
 
 namespace gem::gpu {
 
-PhongMethod::PhongMethod(StoneGeometry geometry, Program program)
-    : geometry_(std::move(geometry)), program_(std::move(program)) {}
+PhongMethod::PhongMethod(StoneGeometry geometry, ProgramVariants programs)
+    : geometry_(std::move(geometry)), programs_(std::move(programs)) {}
 
 Result<PhongMethod> PhongMethod::make(const Stone& stone) {
     auto geometry = StoneGeometry::upload(stone);
     if (!geometry) return Error{"phong: " + geometry.error()};
-    auto program = build_program("phong");
-    if (!program) return Error{program.error()};
-    geometry.value().attach(program.value());
-    return PhongMethod(std::move(geometry).value(), std::move(program).value());
+    ProgramVariants programs("phong", {});
+    auto built =
+        programs.build_every_light_count(0, [&](const Program& p) { geometry.value().attach(p); });
+    if (!built) return Error{built.error()};
+    return PhongMethod(std::move(geometry).value(), std::move(programs));
 }
 
 Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     const Camera& camera = frame.camera;
-    program_.use();
-    program_.set("u_view_projection", view_projection(camera, frame.scene_radius_mm));
+    const Program& program = *programs_.find(light_count_feature(frame.shading.lights));
+    program.use();
+    program.set("u_view_projection", view_projection(camera, frame.scene_radius_mm));
     const bool at_infinity = camera.orthographic();
-    program_.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
-                                      : glm::vec3(-camera.forward() * camera.distance()));
-    program_.set("u_eye_at_infinity", at_infinity ? 1 : 0);
-    set_shading_uniforms(program_, frame, 0);
-    geometry_.bind(program_, 1);
+    program.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
+                                     : glm::vec3(-camera.forward() * camera.distance()));
+    program.set("u_eye_at_infinity", at_infinity ? 1 : 0);
+    set_shading_uniforms(program, frame, 0);
+    geometry_.bind(program, 1);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     glEnable(GL_DEPTH_TEST);

@@ -7,7 +7,7 @@
 #include "geometry/stone.hpp"
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
-#include "gpu/program.hpp"
+#include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "util/result.hpp"
 
@@ -26,9 +26,9 @@ class PhongMethod {
     Result<bool> draw(const StoneFrame& frame) const;
 
   private:
-    PhongMethod(StoneGeometry geometry, Program program);
-    StoneGeometry geometry_;  // the stone pass's triangles; normals from its facet planes
-    Program program_;
+    PhongMethod(StoneGeometry geometry, ProgramVariants programs);
+    StoneGeometry geometry_;    // the stone pass's triangles; normals from its facet planes
+    ProgramVariants programs_;  // one per light count, all built by make()
 };
 
 }  // namespace gem::gpu

@@ -35,7 +35,7 @@ std::vector<ProgramSpec> all_program_specs() {
          {"NON_CONVEX"},
          kShadingFeatures},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
-        {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}},
+        {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}, kLightCountBits},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}, kLightCountBits},
         // The picture from HDR radiance to the display: glare pyramid, tone curve

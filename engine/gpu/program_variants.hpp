@@ -8,12 +8,14 @@
 // combination of features a draw asks for is its own program, built the first time it is
 // asked for and kept.
 
+#include <algorithm>
 #include <cstdint>
 #include <map>
 #include <string>
 #include <vector>
 
 #include "gpu/program.hpp"
+#include "render/lights.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
@@ -31,6 +33,10 @@ inline constexpr std::uint32_t kLightCountShift = 5;
 inline constexpr std::uint32_t kLightCountBits = 7u << kLightCountShift;
 constexpr std::uint32_t light_count_feature(int lights) {
     return static_cast<std::uint32_t>(lights) << kLightCountShift;
+}
+// The light-count feature of a scene's lights (at most kMaxLights are drawn).
+inline std::uint32_t light_count_feature(const std::vector<Light>& lights) {
+    return light_count_feature(static_cast<int>(std::min<std::size_t>(lights.size(), kMaxLights)));
 }
 constexpr int light_count_of(std::uint32_t features) {
     return static_cast<int>((features & kLightCountBits) >> kLightCountShift);
@@ -57,6 +63,17 @@ class ProgramVariants {
         if (!program) return program;
         prepare(*program.value());
         return program;
+    }
+
+    // The variant of every light count, 0 .. kMaxLights, built now with `features` (for users
+    // whose draws are const and must not build).
+    template <class Prepare>
+    Result<bool> build_every_light_count(std::uint32_t features, Prepare&& prepare) {
+        for (int lights = 0; lights <= kMaxLights; ++lights) {
+            auto built = get(features | light_count_feature(lights), prepare);
+            if (!built) return Error{built.error()};
+        }
+        return true;
     }
 
     // A variant built before, or nullptr (for const users that build every variant up front).

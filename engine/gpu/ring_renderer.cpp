@@ -71,10 +71,8 @@ Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
     }
     // Every light count up front: draws are const and must not build.
     ProgramVariants ring("ring", {});
-    for (int lights = 0; lights <= kMaxLights; ++lights) {
-        auto built = ring.get(light_count_feature(lights), [](const Program&) {});
-        if (!built) return Error{built.error()};
-    }
+    auto built = ring.build_every_light_count(0, [](const Program&) {});
+    if (!built) return Error{built.error()};
     auto background = build_program("background");
     if (!background) return Error{background.error()};
     RingRenderer r(std::move(ring), std::move(background).value());
@@ -106,8 +104,7 @@ Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
 void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
                              bool eye_at_infinity, const ShadingSettings& lights,
                              const EnvironmentCube& environment) const {
-    const int count = std::min<int>(static_cast<int>(lights.lights.size()), kMaxLights);
-    const Program& ring = *ring_.find(light_count_feature(count));
+    const Program& ring = *ring_.find(light_count_feature(lights.lights));
     ring.use();
     ring.set("u_view_projection", view_projection);
     ring.set("u_eye", eye);
@@ -118,15 +115,7 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
     ring.set("u_environment", 0);
     ring.set("u_environment_face", static_cast<float>(environment.face_size()));
-    glm::vec4 position[kMaxLights] = {};
-    glm::vec3 colour[kMaxLights] = {};
-    for (int i = 0; i < count; ++i) {
-        const Light& l = lights.lights[static_cast<std::size_t>(i)];
-        position[i] = glm::vec4(glm::vec3(l.position), l.directional ? 0.0f : 1.0f);
-        colour[i] = glm::vec3(l.colour);
-    }
-    glUniform4fv(ring.uniform("u_light_position"), kMaxLights, &position[0].x);
-    glUniform3fv(ring.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    set_light_uniforms(ring, lights.lights);
     glDisable(GL_BLEND);
     glDisable(GL_CULL_FACE);
     glEnable(GL_DEPTH_TEST);

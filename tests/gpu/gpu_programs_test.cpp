@@ -50,8 +50,8 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
         }
     }
     // table, table_non_convex and trace test four switches (16 each), trace_non_convex two,
-    // each with 0 .. 4 lights; the ring, the light count only.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 5 + 5 * (16 + 16 + 16 + 4 + 1));
+    // each with 0 .. 4 lights; the ring and phong, the light count only.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (16 + 16 + 16 + 4 + 1 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }

@@ -6,6 +6,9 @@
 #ifndef MAX_LIGHTS
 #define MAX_LIGHTS 4
 #endif
+#ifndef LIGHT_COUNT
+#define LIGHT_COUNT 0  // compiled in (program_variants.hpp)
+#endif
 
 in vec3 v_position;
 flat in uint v_facet;
@@ -14,7 +17,6 @@ out vec4 o_colour;
 uniform samplerCube u_environment;
 uniform vec3 u_eye;             // eye position; a direction toward the eye when at infinity
 uniform int u_eye_at_infinity;  // 1: orthographic camera
-uniform int u_light_count;
 uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
 uniform vec3 u_light_colour[MAX_LIGHTS];
 uniform float u_k_s;
@@ -33,8 +35,7 @@ void main() {
     vec3 v = u_eye_at_infinity == 1 ? normalize(u_eye) : normalize(u_eye - v_position);
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
-    for (int i = 0; i < MAX_LIGHTS; ++i) {
-        if (i >= u_light_count) break;
+    for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec4 lp = u_light_position[i];
         vec3 l = normalize(lp.w > 0.5 ? lp.xyz - v_position : lp.xyz);
         float n_l = dot(n, l);
