@@ -8,6 +8,7 @@
 
 #include "budget.hpp"
 #include "commands.hpp"
+#include "process_limits.hpp"
 #include "progress.hpp"
 #include "stone_file.hpp"
 #include "table_build.hpp"
@@ -69,6 +70,13 @@ Result<BuildParams> choose_under_budget(const Stone& stone, const BuildOptions& 
 }  // namespace
 
 int run_build(const BuildOptions& o) {
+    if (o.idle) {
+        std::printf("gemtables: %s\n", run_at_idle_priority().c_str());
+        std::fflush(stdout);
+    }
+    if (o.memory_mb > 0) {
+        if (auto limited = limit_memory(o.memory_mb); !limited) return fail(limited.error());
+    }
     Result<Stone> loaded = load_stone_file(o.stone_file);
     if (!loaded) return fail(loaded.error());
     const Stone& stone = loaded.value();

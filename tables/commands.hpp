@@ -24,6 +24,10 @@ struct BuildOptions {
     int screen_px = 0;
     double max_jump_px = 8.0;
     bool choose_only = false;  // print the choice, build nothing
+    // For a build beside a live display (process_limits.hpp): idle CPU priority, and at most
+    // this much address space (0: no limit).
+    bool idle = false;
+    std::uint64_t memory_mb = 0;
 };
 
 struct CatalogueOptions {

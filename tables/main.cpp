@@ -2,6 +2,8 @@
 // describes and pictures existing ones. A thin main: the work is in the engine and the
 // command files beside this one.
 #include <cstdio>
+#include <exception>
+#include <string>
 
 #include <CLI/CLI.hpp>
 
@@ -73,6 +75,11 @@ int main(int argc, char** argv) {
     budget->excludes(dispersion);
     b->add_option("--jobs", build.jobs, "tracing threads (default: every core)")
         ->check(CLI::Range(1, 1024));
+    b->add_flag("--idle", build.idle,
+                "run at idle CPU priority (SCHED_IDLE, nice 19): for a build beside a display");
+    b->add_option("--memory-mb", build.memory_mb,
+                  "fail with one message rather than use more address space than this")
+        ->check(CLI::Range(16, 1 << 20));
 
     std::string info_db;
     CLI::App* i = app.add_subcommand("info", "header, stone, parameters and sizes of a database");
@@ -126,7 +133,15 @@ int main(int argc, char** argv) {
         if (const std::string bad = check_levels(build.levels); !bad.empty()) {
             return fail("--levels: " + bad);
         }
-        return run_build(build);
+        // A thread that cannot start (its stack refused under --memory-mb) throws here.
+        try {
+            return run_build(build);
+        } catch (const std::exception& e) {
+            return fail(std::string("build stopped: ") + e.what() +
+                        (build.memory_mb > 0
+                             ? " (under --memory-mb " + std::to_string(build.memory_mb) + ")"
+                             : std::string()));
+        }
     }
     if (c->parsed()) {
         if (const std::string bad = check_levels(catalogue.build.levels); !bad.empty()) {

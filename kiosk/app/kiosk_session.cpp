@@ -103,6 +103,8 @@ Result<bool> KioskSession::configure() {
         // staff deliver.
         log_error("no catalogue to show: " + startup.error());
     }
+    design_tables_ =
+        std::make_unique<DesignTables>(config_.designs, config_.catalogue.state_dir / "tables");
     auto watcher = CatalogueWatcher::start(catalogue);
     if (watcher) {
         watcher_ = std::move(watcher).value();
@@ -203,6 +205,7 @@ std::vector<int> KioskSession::poll_fds() const {
     if (!display_ && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
     if (input_) fds.push_back(input_->fd());
     if (watcher_) fds.push_back(watcher_->event_fd());
+    if (design_tables_ && design_tables_->fd() >= 0) fds.push_back(design_tables_->fd());
     return fds;
 }
 
@@ -215,6 +218,8 @@ double KioskSession::next_deadline_s(double now_s) const {
     if (replay_) next = std::min(next, replay_->next_due_s());
     if (display_ && display_->ready()) next = std::min(next, next_frame_allowed_s());
     next = std::min(next, notifier_.next_ping_s(now_s));
+    // A check of a design's tables runs on a thread with no descriptor to wake the loop.
+    if (design_tables_ && design_tables_->busy()) next = std::min(next, now_s + 0.1);
     return next;
 }
 
@@ -244,6 +249,11 @@ void KioskSession::dispatch(double now_s) {
     }
     if (watcher_) {
         if (auto incoming = watcher_->take_switch()) switch_catalogue(std::move(*incoming), now_s);
+    }
+    // A design's tables came into or went out of use: its scene is made again between frames.
+    if (design_tables_ &&
+        design_tables_->dispatch(selection_->has_stone() ? &selection_->stone() : nullptr)) {
+        scene_stale_ = true;
     }
 }
 
@@ -284,7 +294,15 @@ void KioskSession::rebuild_scene(double now_s) {
     scene_.reset();  // the old scene's GL objects go before the new one's are made
     if (!selection_->has_stone()) return;
     if (config_.render.method == RenderMethod::automatic) choose_render_method();
-    auto made = StoneScene::make(selection_->stone(), selection_->look(), render_);
+    frames_since_scene_ = 0;
+    // A design whose tables are built and checked is drawn from them (design_tables.hpp).
+    CatalogueStone stone = selection_->stone();
+    RenderChoice render = render_;
+    if (auto tables = design_tables_->tables_for(stone)) {
+        stone.opened = std::move(tables);
+        render.method = gpu::Method::table;
+    }
+    auto made = StoneScene::make(stone, selection_->look(), render);
     if (!made) {
         log_error(made.error());
         return;
@@ -501,6 +519,12 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     last_present_s_ = done_s;
     ++frame_number_;
     notifier_.frame_presented(done_s);
+    if (scene_ && selection_->has_stone()) {
+        design_tables_->frame_drawn(
+            selection_->stone(), scene_->has_database(), frames_since_scene_++, record.draw_ms,
+            frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
+                            config_.render.auto_headroom));
+    }
 
     if (!first_frame_shown_) {
         first_frame_shown_ = true;
@@ -569,6 +593,7 @@ void KioskSession::finish() {
     picture_.reset();
     scene_picture_.reset();
     display_.reset();
+    design_tables_.reset();  // a build still running is stopped
 }
 
 }  // namespace gem::kiosk

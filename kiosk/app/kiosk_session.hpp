@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/crossfade.hpp"
+#include "app/design_tables.hpp"
 #include "app/frame_stats.hpp"
 #include "app/kiosk_run.hpp"
 #include "app/method_probe_run.hpp"
@@ -98,6 +99,8 @@ class KioskSession {
     std::unique_ptr<SceneSelection> selection_;
     std::unique_ptr<StoneScene> scene_;
     bool scene_stale_ = true;
+    int frames_since_scene_ = 0;
+    std::unique_ptr<DesignTables> design_tables_;  // designs' tables, built in the background
     RenderChoice render_;
     std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
 

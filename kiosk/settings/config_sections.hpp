@@ -20,7 +20,7 @@ struct SectionSpec {
     void (*list_keys)(std::vector<std::string>& keys);
 };
 
-// [display], [input], [gestures], [attract], [render], [catalogue], [snapshot].
+// [display], [input], [gestures], [attract], [render], [catalogue], [designs], [snapshot].
 std::span<const SectionSpec> option_sections();
 // [[background]], [[lighting]] (with [[lighting.light]]).
 std::span<const SectionSpec> preset_sections();

@@ -69,6 +69,18 @@ const char* to_string(RenderMethod method) {
     return "?";
 }
 
+const char* to_string(DesignTablesMode mode) {
+    switch (mode) {
+        case DesignTablesMode::automatic:
+            return "auto";
+        case DesignTablesMode::always:
+            return "always";
+        case DesignTablesMode::never:
+            return "never";
+    }
+    return "?";
+}
+
 ConfigLoad parse_config(std::string_view text, std::string_view name,
                         const std::filesystem::path& base_dir) {
     ConfigLoad load;

@@ -64,6 +64,25 @@ struct CatalogueConfig {
     double settle_s = 5.0;  // a new catalogue is read once its files stop changing this long
 };
 
+// [designs]: tables for catalogue stones that name a design instead of a database
+// (app/design_tables.hpp). A design is shown at once by the trace; its tables are built by
+// `builder` in the background, at idle CPU priority and with bounded memory, into
+// state_dir/tables, and reused after a restart.
+enum class DesignTablesMode { automatic, always, never };
+const char* to_string(DesignTablesMode mode);
+struct DesignsConfig {
+    // automatic ("auto"): built when the trace's frames miss the frame budget, and kept when
+    // the tables then draw faster; always: built for every design shown and used; never.
+    DesignTablesMode tables = DesignTablesMode::automatic;
+    std::filesystem::path builder = "/usr/bin/gemtables";
+    int level_px = 256;        // the finest table side; a level of half that is stored too
+    double spacing_deg = 6.0;  // between stored views
+    int depth = 8;             // internal ray segments stored per pixel
+    double threshold = 1e-3;   // exit rays lighter than this are dropped
+    int memory_mb = 1024;      // the builder's address space at most
+    int jobs = 0;              // tracing threads; 0: every core
+};
+
 // [snapshot]: PNG pictures of the screen (CI, remote support).
 struct SnapshotConfig {
     std::filesystem::path dir = "/var/lib/gemkiosk/snapshots";
@@ -77,6 +96,7 @@ struct KioskConfig {
     RenderConfig render;
     PictureConfig picture;
     CatalogueConfig catalogue;
+    DesignsConfig designs;
     SnapshotConfig snapshot;
     std::vector<BackgroundPreset> backgrounds = default_backgrounds();
     std::vector<LightingPreset> lightings = default_lightings();

@@ -1,5 +1,5 @@
 // The option tables of the config file: [display], [input], [gestures], [attract], [render],
-// [catalogue], [snapshot]. Each key is one line of a spec table; the ranges are what the
+// [catalogue], [designs], [snapshot]. Each key is one line of a spec table; the ranges are what the
 // kiosk can use, so a value outside them is a typo or a misunderstanding worth a message.
 #include <cassert>
 #include <charconv>
@@ -222,6 +222,31 @@ constexpr KeySpec<CatalogueConfig> kCatalogueKeys[] = {
                     CatalogueConfig& o) { r.number(n, k, 0.0, 3600.0, o.settle_s); }},
 };
 
+constexpr KeySpec<DesignsConfig> kDesignsKeys[] = {
+    {"tables",
+     [](ConfigReader& r, const Node& n, Key k, DesignsConfig& o) {
+         std::size_t i = 0;
+         if (!r.choice(n, k, {"auto", "always", "never"}, i)) return;
+         constexpr DesignTablesMode modes[] = {DesignTablesMode::automatic,
+                                               DesignTablesMode::always, DesignTablesMode::never};
+         o.tables = modes[i];
+     }},
+    {"builder",
+     [](ConfigReader& r, const Node& n, Key k, DesignsConfig& o) { r.path(n, k, o.builder); }},
+    {"level_px", [](ConfigReader& r, const Node& n, Key k,
+                    DesignsConfig& o) { r.integer(n, k, 16, 4096, o.level_px); }},
+    {"spacing_deg", [](ConfigReader& r, const Node& n, Key k,
+                       DesignsConfig& o) { r.number(n, k, 0.5, 45.0, o.spacing_deg); }},
+    {"depth", [](ConfigReader& r, const Node& n, Key k,
+                 DesignsConfig& o) { r.integer(n, k, 1, 64, o.depth); }},
+    {"threshold", [](ConfigReader& r, const Node& n, Key k,
+                     DesignsConfig& o) { r.number(n, k, 0.0, 0.5, o.threshold); }},
+    {"memory_mb", [](ConfigReader& r, const Node& n, Key k,
+                     DesignsConfig& o) { r.integer(n, k, 16, 1 << 20, o.memory_mb); }},
+    {"jobs", [](ConfigReader& r, const Node& n, Key k,
+                DesignsConfig& o) { r.integer(n, k, 0, 1024, o.jobs); }},
+};
+
 constexpr KeySpec<SnapshotConfig> kSnapshotKeys[] = {
     {"dir", [](ConfigReader& r, const Node& n, Key k, SnapshotConfig& o) { r.path(n, k, o.dir); }},
     {"every_n_frames", [](ConfigReader& r, const Node& n, Key k,
@@ -280,6 +305,11 @@ constexpr SectionSpec kSections[] = {
          read_table<CatalogueConfig>(r, n, "catalogue", kCatalogueKeys, c.catalogue);
      },
      [](std::vector<std::string>& keys) { append_keys(keys, "catalogue", kCatalogueKeys); }},
+    {"designs",
+     [](ConfigReader& r, const Node& n, KioskConfig& c) {
+         read_table<DesignsConfig>(r, n, "designs", kDesignsKeys, c.designs);
+     },
+     [](std::vector<std::string>& keys) { append_keys(keys, "designs", kDesignsKeys); }},
     {"snapshot",
      [](ConfigReader& r, const Node& n, KioskConfig& c) {
          read_table<SnapshotConfig>(r, n, "snapshot", kSnapshotKeys, c.snapshot);

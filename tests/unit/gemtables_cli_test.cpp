@@ -110,6 +110,33 @@ TEST_F(GemtablesCli, BudgetNeedsAScreenAndExcludesTheParametersItChooses) {
     EXPECT_FALSE(fs::exists(db));  // --choose-only builds nothing
 }
 
+// The kiosk's background builds: --idle says what the kernel granted (read back with
+// sched_getscheduler, not assumed), and the database is the same as without it; under a
+// --memory-mb bound too small for the build, one message names the bound and no database
+// appears.
+TEST_F(GemtablesCli, IdleBuildsTheSameBytesAndAMemoryBoundFailsCleanly) {
+    const fs::path plain = dir_ / "plain.gemdb";
+    const fs::path idle = dir_ / "idle.gemdb";
+    ASSERT_EQ(run("build " + stone_.string() + " -o " + plain.string() + " " + kTinyOptions).status,
+              0);
+    const Outcome built = run("build " + stone_.string() + " -o " + idle.string() + " " +
+                              kTinyOptions + " --idle --memory-mb 1024");
+    ASSERT_EQ(built.status, 0) << built.output;
+    EXPECT_NE(built.output.find("running at idle CPU priority (SCHED_IDLE), nice 19"),
+              std::string::npos)
+        << built.output;
+    EXPECT_EQ(tables_test::read_bytes(idle), tables_test::read_bytes(plain));
+
+    // 16 MB of address space cannot hold the tracer's threads and tables.
+    const fs::path starved = dir_ / "starved.gemdb";
+    const Outcome failed = run("build " + stone_.string() + " -o " + starved.string() +
+                               " --levels 64,128 --spacing 40 --jobs 2 --memory-mb 16");
+    EXPECT_NE(failed.status, 0) << failed.output;
+    EXPECT_NE(failed.output.find("--memory-mb"), std::string::npos) << failed.output;
+    EXPECT_EQ(failed.output.find("terminate called"), std::string::npos) << failed.output;
+    EXPECT_FALSE(fs::exists(starved));
+}
+
 TEST_F(GemtablesCli, VerifyFailsOnDamagedCopies) {
     const fs::path db = dir_ / "tiny.gemdb";
     ASSERT_EQ(run("build " + stone_.string() + " -o " + db.string() + " " + kTinyOptions).status,

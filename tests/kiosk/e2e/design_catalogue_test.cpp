@@ -66,5 +66,74 @@ TEST(KioskDesigns, ADesignIsShownAtOnceAndABrokenOneIsLeftOut) {
     EXPECT_EQ(kiosk.wait(30s), 0) << kiosk.log();
 }
 
+// The tables of a design that is not convex (the heart: the trace tests each of its triangles
+// per bounce) are built in the background while its trace is on screen, switched to, and found
+// again after a restart. The snapshot is checked against a picture drawn from the very
+// database the kiosk built, by the table method in this process.
+TEST(KioskDesigns, TablesAreBuiltInTheBackgroundAndReusedAfterARestart) {
+    auto sapphire = test_catalogue("oval-sapphire");
+    ASSERT_TRUE(sapphire.ok()) << sapphire.error();
+    const fs::path dir = fresh_dir("design-tables");
+    const fs::path delivery = dir / "delivery";
+    fs::create_directories(delivery);
+    fs::copy_file(fs::path(GEM_SOURCE_DIR) / "config/stones/heart-ruby.toml",
+                  delivery / "heart.toml");
+    std::ofstream(delivery / "catalogue.toml")
+        << "[catalogue]\nname = \"hearts\"\n\n[[stone]]\nname = \"heart\"\n"
+        << "design = \"heart.toml\"\n";
+    // Tiny tables (32 and 64 px, every 20°, depth 4): a build of about a second.
+    const fs::path config =
+        write_config(dir, sapphire.value(),
+                     "[designs]\ntables = \"always\"\nbuilder = \"" GEMTABLES_PATH
+                     "\"\nlevel_px = 64\nspacing_deg = 20.0\ndepth = 4\n");
+    fs::create_directories(dir / "state" / "inbox");
+    fs::path built;
+    {
+        KioskProcess kiosk({GEMKIOSK_PATH, "--config", config.string(), "--seconds", "150"});
+        ASSERT_TRUE(kiosk.wait_for_line("first frame on screen", 60s)) << kiosk.log();
+        const auto copied = std::chrono::steady_clock::now();
+        const auto since_copy = [&] {
+            return std::chrono::duration<double>(std::chrono::steady_clock::now() - copied).count();
+        };
+        fs::copy(delivery, dir / "state" / "inbox" / "hearts", fs::copy_options::recursive);
+        ASSERT_TRUE(kiosk.wait_for_line("showing catalogue 'hearts'", 60s)) << kiosk.log();
+        std::printf("copy to the design on screen (traced): %.2f s\n", since_copy());
+        const std::string in_use = "design 'heart': drawn from its tables, ";
+        ASSERT_TRUE(kiosk.wait_for_line(in_use, 120s)) << kiosk.log();
+        std::printf("copy to its tables in use: %.2f s\n", since_copy());
+        const std::string log = kiosk.log();
+        EXPECT_NE(log.find("design 'heart': gemtables: running at idle CPU priority (SCHED_IDLE)"),
+                  std::string::npos)
+            << log;
+        const auto at = log.find(in_use) + in_use.size();
+        built = log.substr(at, log.find('\n', at) - at);
+        ASSERT_TRUE(fs::exists(built)) << built;
+        EXPECT_EQ(built.parent_path(), dir / "state" / "tables");
+
+        // The same stone from the same database, as a catalogue of its own for the reference.
+        const fs::path reference = dir / "reference";
+        fs::create_directories(reference);
+        fs::copy_file(built, reference / "heart.gemdb");
+        std::ofstream(reference / "catalogue.toml")
+            << "[catalogue]\nname = \"reference\"\n\n[[stone]]\nname = \"heart\"\n"
+            << "database = \"heart.gemdb\"\nring = \"parametric\"\n";
+        const Image shown = settled_snapshot(kiosk, dir / "snapshots" / "snapshot.png");
+        ASSERT_FALSE(shown.pixels.empty()) << kiosk.log();
+        expect_shows(shown, reference, sapphire.value(), "the design from its tables");
+        kiosk.signal(SIGTERM);
+        EXPECT_EQ(kiosk.wait(30s), 0) << kiosk.log();
+    }
+    // A restart shows the installed catalogue and takes the tables it finds, building nothing.
+    const auto modified = fs::last_write_time(built);
+    KioskProcess again({GEMKIOSK_PATH, "--config", config.string(), "--seconds", "60"});
+    ASSERT_TRUE(again.wait_for_line("design 'heart': drawn from its tables", 60s)) << again.log();
+    EXPECT_NE(again.log().find("checking the tables built before"), std::string::npos)
+        << again.log();
+    EXPECT_EQ(again.log().find("building its tables"), std::string::npos) << again.log();
+    EXPECT_EQ(fs::last_write_time(built), modified);
+    again.signal(SIGTERM);
+    EXPECT_EQ(again.wait(30s), 0) << again.log();
+}
+
 }  // namespace
 }  // namespace gem::kiosk_e2e

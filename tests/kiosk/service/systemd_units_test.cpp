@@ -24,9 +24,10 @@ const fs::path kUnitDir = fs::path(GEM_SOURCE_DIR) / "systemd";
 const char* const kUnits[] = {"gemkiosk.service", "gemkiosk-catalogue.path",
                               "gemkiosk-catalogue.service"};
 
-// The exposure scores reached (systemd 252): gemkiosk.service 1.1, the catalogue helper 0.9.
-// What is left and why: the comments in the units.
-constexpr double kKioskExposureMax = 1.1;
+// The exposure scores reached (systemd 252): gemkiosk.service 1.2, the catalogue helper 0.9.
+// What is left and why: the comments in the units (the kiosk's 0.1 above its earlier 1.1 is
+// the two @resources calls a background table build lowers its own priority with).
+constexpr double kKioskExposureMax = 1.2;
 constexpr double kCatalogueExposureMax = 0.9;
 
 std::string read_text(const fs::path& path) {

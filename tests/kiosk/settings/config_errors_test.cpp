@@ -116,7 +116,10 @@ TEST(ConfigErrors, ValuesOutOfRangeAreReportedAndKeepDefaults) {
         "[snapshot]\n"
         "every_n_frames = -1\n"
         "[catalogue]\n"
-        "inbox_dir = \"\"\n";
+        "inbox_dir = \"\"\n"
+        "[designs]\n"
+        "level_px = 8\n"
+        "memory_mb = 4\n";
     const ConfigLoad load = parse_config(text, "t.toml", "");
     const std::vector<std::string> expected = {
         message(text, "crossfade_s", "crossfade_s", "must be between 0 and 10"),
@@ -132,6 +135,8 @@ TEST(ConfigErrors, ValuesOutOfRangeAreReportedAndKeepDefaults) {
         message(text, "view_cache_mb", "render.view_cache_mb", "must be between 16 and 65536"),
         message(text, "every_n_frames", "snapshot.every_n_frames", "must be between 0 and 1000000"),
         message(text, "inbox_dir", "catalogue.inbox_dir", "expected a path, not an empty string"),
+        message(text, "level_px", "designs.level_px", "must be between 16 and 4096"),
+        message(text, "memory_mb", "designs.memory_mb", "must be between 16 and 1048576"),
     };
     EXPECT_EQ(load.errors, expected);
     EXPECT_EQ(load.config.crossfade_s, 0.4);
@@ -146,6 +151,8 @@ TEST(ConfigErrors, ValuesOutOfRangeAreReportedAndKeepDefaults) {
     EXPECT_EQ(load.config.render.view_cache_mb, 256);
     EXPECT_EQ(load.config.snapshot.every_n_frames, 0);
     EXPECT_EQ(load.config.catalogue.inbox_dir, "/var/lib/gemkiosk/inbox");
+    EXPECT_EQ(load.config.designs.level_px, 256);
+    EXPECT_EQ(load.config.designs.memory_mb, 1024);
 }
 
 TEST(ConfigErrors, ModesInBothFormsAreAccepted) {
@@ -197,7 +204,9 @@ TEST(ConfigErrors, UnknownChoicesNameTheChoices) {
         "tap = \"double\"\n"
         "two_finger_tap = \"none\"\n"
         "[render]\n"
-        "method = \"raster\"\n";
+        "method = \"raster\"\n"
+        "[designs]\n"
+        "tables = \"sometimes\"\n";
     const ConfigLoad load = parse_config(text, "t.toml", "");
     const std::vector<std::string> expected = {
         message(text, "log_level", "log_level",
@@ -209,6 +218,8 @@ TEST(ConfigErrors, UnknownChoicesNameTheChoices) {
                 "expected one of \"none\", \"next_stone\", \"next_preset\""),
         message(text, "method", "render.method",
                 "expected one of \"table\", \"trace\", \"phong\", \"auto\""),
+        message(text, "tables", "designs.tables",
+                "expected one of \"auto\", \"always\", \"never\""),
     };
     EXPECT_EQ(load.errors, expected);
     EXPECT_EQ(load.config.log_level, LogLevel::info);
@@ -217,6 +228,7 @@ TEST(ConfigErrors, UnknownChoicesNameTheChoices) {
     EXPECT_EQ(load.config.gestures.tap, TapAction::next_stone);
     EXPECT_EQ(load.config.gestures.two_finger_tap, TapAction::none);
     EXPECT_EQ(load.config.render.method, RenderMethod::automatic);
+    EXPECT_EQ(load.config.designs.tables, DesignTablesMode::automatic);
 }
 
 TEST(ConfigErrors, ZoomLimitsOutOfOrderGoBackToTheDefaults) {

@@ -70,6 +70,16 @@ inbox_dir = "../drop"
 watch_dirs = ["/media/usb", "stick"]
 settle_s = 0.5
 
+[designs]
+tables = "always"
+builder = "bin/gemtables"
+level_px = 128
+spacing_deg = 4.5
+depth = 6
+threshold = 0.01
+memory_mb = 300
+jobs = 1
+
 [snapshot]
 dir = "shots"
 every_n_frames = 10
@@ -133,6 +143,14 @@ TEST(ConfigValues, EveryOptionKeyReachesItsField) {
     EXPECT_EQ(c.catalogue.watch_dirs,
               (std::vector<std::filesystem::path>{"/media/usb", "/etc/gemkiosk/stick"}));
     EXPECT_EQ(c.catalogue.settle_s, 0.5);
+    EXPECT_EQ(c.designs.tables, DesignTablesMode::always);
+    EXPECT_EQ(c.designs.builder, "/etc/gemkiosk/bin/gemtables");
+    EXPECT_EQ(c.designs.level_px, 128);
+    EXPECT_EQ(c.designs.spacing_deg, 4.5);
+    EXPECT_EQ(c.designs.depth, 6);
+    EXPECT_EQ(c.designs.threshold, 0.01);
+    EXPECT_EQ(c.designs.memory_mb, 300);
+    EXPECT_EQ(c.designs.jobs, 1);
     EXPECT_EQ(c.snapshot.dir, "/etc/gemkiosk/shots");
     EXPECT_EQ(c.snapshot.every_n_frames, 10);
 }
