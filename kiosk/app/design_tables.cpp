@@ -37,6 +37,11 @@ std::string fixed(double value, int decimals) {
     return text;
 }
 
+// How log lines name a design.
+std::string named(const std::string& name) {
+    return "design '" + name + "'";
+}
+
 bool is_design(const CatalogueStone& stone) {
     return !stone.design.empty() && stone.designed != nullptr;
 }
@@ -105,13 +110,13 @@ DesignTables::Entry& DesignTables::entry_for(const CatalogueStone& stone) {
 }
 
 void DesignTables::look_on_disk(const std::string& key, Entry& e) {
-    const std::string who = "design '" + e.name + "'";
+    const std::string who = named(e.name);
     std::error_code ec;
     if (config_.tables == DesignTablesMode::never) {
         e.state = State::trace_holds;
         return;
     }
-    if (fs::exists(file_of(key, ".trace"), ec)) {
+    if (config_.tables == DesignTablesMode::automatic && fs::exists(file_of(key, ".trace"), ec)) {
         e.state = State::trace_wins;
         log_info(who + ": its tables did not pay on this machine (" +
                  file_of(key, ".trace").string() + "): drawn by the trace");
@@ -136,7 +141,6 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
                                int frames_since_scene, double draw_ms, double budget_ms) {
     if (!is_design(stone) || frames_since_scene < kWarmupFrames) return;
     Entry& e = entry_for(stone);
-    const std::string who = "design '" + e.name + "'";
     if (e.state == State::measuring && !from_tables) {
         e.trace_ms.push_back(draw_ms);
         if (e.trace_ms.size() < kTimedFrames) return;
@@ -144,6 +148,7 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         e.trace_ms.clear();
         if (!p90) return;  // no usable frame: time it again
         e.trace_p90_ms = *p90;
+        const std::string who = named(e.name);
         if (!(*p90 > budget_ms)) {
             e.state = State::trace_holds;
             log_info(who + ": the trace holds the frame budget (p90 " + fixed(*p90, 1) +
@@ -163,6 +168,7 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         e.table_ms.clear();
         if (!p90) return;
         e.fresh = false;
+        const std::string who = named(e.name);
         const std::string figures =
             "p90 " + fixed(*p90, 1) + " ms against the trace's " + fixed(e.trace_p90_ms, 1) + " ms";
         if (*p90 < e.trace_p90_ms) {
@@ -226,7 +232,7 @@ void DesignTables::take_check() {
     }
     Result<std::shared_ptr<const Database>> checked = check_.get();
     Entry& e = entries_[check_key_];
-    const std::string who = "design '" + e.name + "'";
+    const std::string who = named(e.name);
     if (checked) {
         e.state = State::tables;
         e.database = std::move(checked).value();
@@ -257,7 +263,7 @@ void DesignTables::start_next_build() {
         queue_.erase(queue_.begin());
         Entry& e = entries_[key];
         if (e.state != State::waiting) continue;
-        const std::string who = "design '" + e.name + "'";
+        const std::string who = named(e.name);
         std::error_code ec;
         fs::create_directories(dir_, ec);
         if (ec) {
@@ -310,14 +316,14 @@ void DesignTables::start_next_build() {
 void DesignTables::take_build_output() {
     if (!build_) return;
     Entry& e = entries_[build_key_];
-    const std::string who = "design '" + e.name + "'";
     for (const std::string& line : build_->read_lines()) {
         // Its progress every tenth is for a debugging eye; the rest says what it does.
         const bool progress = line.find(" tables), elapsed ") != std::string::npos;
-        log(progress ? LogLevel::debug : LogLevel::info, who + ": " + line);
+        log(progress ? LogLevel::debug : LogLevel::info, named(e.name) + ": " + line);
         build_last_line_ = line;
     }
     if (!build_->ended()) return;
+    const std::string who = named(e.name);
     const bool ok = build_->succeeded();
     const std::string end = build_->describe_end();
     build_.reset();

@@ -141,6 +141,12 @@ TEST_F(DesignTablesTest, SlowerTablesAreDroppedAndNotBuiltAgain) {
     EXPECT_FALSE(again.busy());
     EXPECT_EQ(again.tables_for(stone_), nullptr);
     EXPECT_NE(log.find("did not pay on this machine"), std::string::npos) << log;
+
+    // Staff who ask for tables whatever they cost get them all the same.
+    config_.tables = DesignTablesMode::always;
+    DesignTables asked(config_, tables_dir());
+    EXPECT_TRUE(wait_for_switch(asked));
+    EXPECT_NE(asked.tables_for(stone_), nullptr);
 }
 
 TEST_F(DesignTablesTest, ATraceWithinTheBudgetBuildsNothing) {
