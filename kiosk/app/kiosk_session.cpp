@@ -336,16 +336,6 @@ void KioskSession::choose_render_method() {
     // (10 s) would not survive a probe on a slow GPU.
     const glm::ivec2 size = display_->picture_size();
     if (probed_size_ == size) return;
-    if (!selection_->stone().opened && !selection_->stone().design.empty()) {
-        // A design has no tables to choose between: it is drawn by the trace. The session's
-        // choice is made now all the same (never once frames are on screen), for stones with
-        // tables that come later: trace, the most accurate.
-        probed_size_ = size;
-        render_ = apply_candidate(render_, method_ladder(0, false).front());
-        log_info("render.method auto: stone '" + selection_->stone().name +
-                 "' is a design without tables, drawn by trace; stones with tables will be too");
-        return;
-    }
     if (probed_size_ && first_frame_shown_) {
         log_info("render.method auto: keeping the choice measured at " +
                  std::to_string(probed_size_->x) + "x" + std::to_string(probed_size_->y));

@@ -90,15 +90,24 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
     std::vector<MethodCandidate> ladder = method_ladder(0);
     auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
     if (!first) return Error{first.error()};
-    if (!first.value()->has_database()) return Error{"stone '" + stone.name + "' has no tables"};
-    int needed_level = 0;
-    const Database& db = first.value()->database();
-    auto camera = probe_camera(*first.value(), start, 0.0, target);
-    if (camera) {
-        needed_level = static_cast<int>(
-            gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
+    if (first.value()->has_database()) {
+        int needed_level = 0;
+        const Database& db = first.value()->database();
+        auto camera = probe_camera(*first.value(), start, 0.0, target);
+        if (camera) {
+            needed_level = static_cast<int>(
+                gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
+        }
+        result.candidates = method_ladder(needed_level, db.params().dispersion);
+    } else {
+        // A design has no tables: its rungs are the trace's, with exact fire first where its
+        // material disperses (the fire a design shows, stone_scene.cpp).
+        const bool fire =
+            first.value()->stone().material.dispersion.kind != Dispersion::Kind::constant;
+        result.candidates = method_ladder(0, fire);
+        std::erase_if(result.candidates,
+                      [](const MethodCandidate& c) { return c.method != gpu::Method::trace; });
     }
-    result.candidates = method_ladder(needed_level, db.params().dispersion);
     result.frame_ms.resize(result.candidates.size());
     std::unique_ptr<StoneScene> scene = std::move(first).value();
     // With dispersion the ladder starts with a rung the first scene does not draw.

@@ -32,8 +32,9 @@ struct ProbeResult {
 // Walks the ladder for `stone` and chooses against `budget_ms`. A candidate stops early once
 // it is certain to miss the budget (more frames over it than p90 of `frames` allows: 2 of 10),
 // so a slow machine pays 4 frames per candidate, not 12; its statistic is then the p90 of the
-// frames drawn. The walk stops at the first candidate that fits.
-// Errors: the first scene (table blend) cannot be made. Leaves `target` bound.
+// frames drawn. The walk stops at the first candidate that fits. A design, which has no
+// tables, walks the trace's rungs only (with exact fire first where its material disperses).
+// Errors: the first scene cannot be made. Leaves `target` bound.
 Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice& look,
                                   const RenderChoice& base, gpu::HdrPicture& scene_picture,
                                   gpu::RenderTarget& target, const ViewState& start,
