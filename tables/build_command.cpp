@@ -75,7 +75,9 @@ int run_build(const BuildOptions& o) {
         std::fflush(stdout);
     }
     if (o.memory_mb > 0) {
-        if (auto limited = limit_memory(o.memory_mb); !limited) return fail(limited.error());
+        auto limited = limit_memory(o.memory_mb);
+        if (!limited) return fail(limited.error());
+        if (!limited.value().empty()) std::printf("gemtables: %s\n", limited.value().c_str());
     }
     Result<Stone> loaded = load_stone_file(o.stone_file);
     if (!loaded) return fail(loaded.error());

@@ -14,6 +14,20 @@ namespace gem::tables {
 
 namespace {
 
+// AddressSanitizer reserves terabytes of address space for its shadow memory, so no address-space
+// limit can hold an instrumented build (its first mapping fails).
+#if defined(__SANITIZE_ADDRESS__)
+constexpr bool kAddressSanitizer = true;
+#elif defined(__has_feature)
+#if __has_feature(address_sanitizer)
+constexpr bool kAddressSanitizer = true;
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+#else
+constexpr bool kAddressSanitizer = false;
+#endif
+
 // The line the new-handler writes, made before any allocation can fail.
 char g_out_of_memory[160];
 std::size_t g_out_of_memory_size = 0;
@@ -47,7 +61,12 @@ std::string run_at_idle_priority() {
     return line + refused;
 }
 
-Result<bool> limit_memory(std::uint64_t megabytes) {
+Result<std::string> limit_memory(std::uint64_t megabytes) {
+    if (kAddressSanitizer) {
+        return std::string(
+            "--memory-mb not applied: this build carries AddressSanitizer, whose "
+            "shadow memory needs more address space than any limit");
+    }
     const rlim_t bytes = static_cast<rlim_t>(megabytes) << 20;
     // prlimit(2), not setrlimit: the kiosk's unit filters @resources, which holds setrlimit
     // but not prlimit64.
@@ -66,7 +85,7 @@ Result<bool> limit_memory(std::uint64_t megabytes) {
                                 static_cast<unsigned long long>(megabytes));
     g_out_of_memory_size = n > 0 ? std::min<std::size_t>(n, sizeof g_out_of_memory - 1) : 0;
     std::set_new_handler(out_of_memory);
-    return true;
+    return std::string();
 }
 
 }  // namespace gem::tables

@@ -16,7 +16,8 @@ namespace gem::tables {
 std::string run_at_idle_priority();
 
 // An address-space limit of `megabytes` (RLIMIT_AS), and a new-handler that ends the process
-// with one line naming the limit when an allocation on any thread fails under it.
-Result<bool> limit_memory(std::uint64_t megabytes);
+// with one line naming the limit when an allocation on any thread fails under it. The value is
+// a line to print when the limit was deliberately not applied (a sanitizer build), else empty.
+Result<std::string> limit_memory(std::uint64_t megabytes);
 
 }  // namespace gem::tables
