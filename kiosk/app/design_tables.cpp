@@ -122,7 +122,12 @@ void DesignTables::look_on_disk(const std::string& key, Entry& e) {
                  file_of(key, ".trace").string() + "): drawn by the trace");
         return;
     }
-    if (fs::exists(file_of(key, ".gemdb"), ec)) {
+    const bool built = fs::exists(file_of(key, ".gemdb"), ec);
+    // Tables whose verdict was not reached (the kiosk stopped first) are timed again against
+    // the trace before they are trusted.
+    const bool judged =
+        config_.tables != DesignTablesMode::automatic || fs::exists(file_of(key, ".pays"), ec);
+    if (built && judged) {
         log_info(who + ": checking the tables built before, " + file_of(key, ".gemdb").string());
         e.state = State::checking;
         return;
@@ -155,8 +160,18 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
                      " ms, budget " + fixed(budget_ms, 1) + " ms): no tables");
             return;
         }
+        const std::string& key = key_of(stone);
+        std::error_code ec;
+        if (fs::exists(file_of(key, ".gemdb"), ec)) {
+            // Built by an earlier run that stopped before timing them.
+            e.state = State::checking;
+            log_notice(who + ": the trace draws it in p90 " + fixed(*p90, 1) + " ms, over the " +
+                       fixed(budget_ms, 1) + " ms budget: checking the tables built before, " +
+                       file_of(key, ".gemdb").string());
+            return;
+        }
         e.state = State::waiting;
-        queue_.push_back(key_of(stone));
+        queue_.push_back(key);
         log_notice(who + ": the trace draws it in p90 " + fixed(*p90, 1) + " ms, over the " +
                    fixed(budget_ms, 1) + " ms budget: building its tables in the background");
         return;
@@ -171,22 +186,25 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         const std::string who = named(e.name);
         const std::string figures =
             "p90 " + fixed(*p90, 1) + " ms against the trace's " + fixed(e.trace_p90_ms, 1) + " ms";
-        if (*p90 < e.trace_p90_ms) {
-            log_notice(who + ": its tables pay: " + figures);
-            return;
-        }
-        // Slower than the trace: the trace stays, and the verdict is kept so that no later run
-        // builds them again; the tables themselves go.
+        // The verdict is kept beside the tables, so that a later run trusts them, or builds
+        // them no more.
         const std::string& key = key_of(stone);
         const std::string verdict = "tables " + figures + "\n";
-        if (auto written =
-                write_file_atomic(file_of(key, ".trace"), verdict.data(), verdict.size());
+        const bool pay = *p90 < e.trace_p90_ms;
+        if (auto written = write_file_atomic(file_of(key, pay ? ".pays" : ".trace"), verdict.data(),
+                                             verdict.size());
             !written) {
             log_warning(who + ": " + written.error());
         }
+        if (pay) {
+            log_notice(who + ": its tables pay: " + figures);
+            return;
+        }
+        // Slower than the trace: the trace stays, and the tables themselves go.
         std::error_code ec;
         e.database.reset();
         fs::remove(file_of(key, ".gemdb"), ec);
+        fs::remove(file_of(key, ".pays"), ec);
         e.state = State::trace_wins;
         switched_key_ = key;
         log_notice(who + ": its tables do not pay here (" + figures +

@@ -13,8 +13,10 @@
 //   checking    the finished (or, after a restart, the found) database is opened and every
 //               view's checksum verified, on a worker thread
 //   tables      drawn from its tables; with mode auto, fresh tables are timed as the trace was
-//               and kept only if they are faster; if not, the trace stays and the
-//               verdict is written beside them (<key>.trace), so no later run builds them again
+//               and kept only if they are faster. The verdict is written beside them: <key>.pays,
+//               so a later run trusts them, or <key>.trace (and the tables go), so no later run
+//               builds them again. Tables without a verdict (the kiosk stopped first) are timed
+//               again, after the trace, in the next run
 //
 // Files are named by a hash of the stone (geometry and material, the sections a database
 // stores) and the build settings, so a changed design or setting builds anew, a catalogue

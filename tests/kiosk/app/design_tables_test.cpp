@@ -8,6 +8,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <chrono>
 #include <filesystem>
 #include <fstream>
@@ -99,8 +100,14 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
         return database->path();
     }();
     ASSERT_TRUE(fs::exists(file));
-    // Only the database is left in the folder: no temporary, no verdict file.
-    EXPECT_EQ(std::distance(fs::directory_iterator(tables_dir()), fs::directory_iterator()), 1);
+    // The database and its verdict are left in the folder, and no temporary.
+    std::vector<std::string> left;
+    for (const auto& e : fs::directory_iterator(tables_dir())) {
+        left.push_back(e.path().filename().string());
+    }
+    std::sort(left.begin(), left.end());
+    const std::string stem = file.stem().string();
+    EXPECT_EQ(left, (std::vector<std::string>{stem + ".gemdb", stem + ".pays"}));
 
     // A restart: the tables are checked and used without timing or building anything.
     const auto modified = fs::last_write_time(file);
@@ -111,6 +118,38 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
     EXPECT_NE(again.tables_for(stone_), nullptr);
     EXPECT_EQ(log.find("building"), std::string::npos) << log;
     EXPECT_EQ(fs::last_write_time(file), modified);
+}
+
+// A kiosk stopped after its tables were built but before they were timed: the next run times
+// the trace first, then takes the tables it finds (no second build) and times them.
+TEST_F(DesignTablesTest, TablesWithoutAVerdictAreTimedAgainAfterARestart) {
+    fs::path file;
+    {
+        DesignTables tables(config_, tables_dir());
+        frames(tables, false, 6, 25.0);
+        ASSERT_TRUE(wait_for_switch(tables));
+        file = tables.tables_path(stone_);
+    }
+    ASSERT_TRUE(fs::exists(file));
+    DesignTables again(config_, tables_dir());
+    testing::internal::CaptureStderr();
+    EXPECT_FALSE(again.dispatch(&stone_));
+    EXPECT_FALSE(again.busy());  // nothing checked or built before the trace is timed
+    EXPECT_EQ(again.tables_for(stone_), nullptr);
+    frames(again, false, 6, 25.0);
+    EXPECT_TRUE(wait_for_switch(again));
+    EXPECT_NE(again.tables_for(stone_), nullptr);
+    frames(again, true, 6, 15.0);
+    EXPECT_FALSE(again.dispatch(&stone_));
+    const std::string log = testing::internal::GetCapturedStderr();
+    EXPECT_NE(log.find("over the 10.0 ms budget: checking the tables built before"),
+              std::string::npos)
+        << log;
+    EXPECT_EQ(log.find("building its tables"), std::string::npos) << log;
+    EXPECT_NE(log.find("its tables pay: p90 15.0 ms against the trace's 25.0 ms"),
+              std::string::npos)
+        << log;
+    EXPECT_TRUE(fs::exists(fs::path(file).replace_extension(".pays")));
 }
 
 TEST_F(DesignTablesTest, SlowerTablesAreDroppedAndNotBuiltAgain) {
