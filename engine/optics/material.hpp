@@ -42,6 +42,8 @@ struct Material {
     double index(double wavelength_nm = kFraunhoferD) const {
         return dispersion.index(wavelength_nm);
     }
+    // Whether the index changes with wavelength: a stone of it shows fire.
+    bool disperses() const { return dispersion.kind != Dispersion::Kind::constant; }
 };
 
 // The built-in catalogue of materials (diamond, sapphire, ruby, emerald, garnet, spinel,

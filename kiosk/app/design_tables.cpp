@@ -8,6 +8,7 @@
 #include <system_error>
 
 #include "app/method_probe.hpp"
+#include "app/process_info.hpp"
 #include "catalogue/payload_checksums.hpp"
 #include "service/log.hpp"
 #include "tables/bytes.hpp"
@@ -25,11 +26,6 @@ namespace fs = std::filesystem;
 constexpr int kWarmupFrames = 2;
 // Frames timed per method; judged by their 90th percentile, as the method probe judges.
 constexpr std::size_t kTimedFrames = 6;
-
-double seconds_now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 std::string fixed(double value, int decimals) {
     char text[32];
@@ -103,7 +99,7 @@ DesignTables::Entry& DesignTables::entry_for(const CatalogueStone& stone) {
     if (e.state == State::unknown) {
         e.name = stone.name;
         e.design = stone.design;
-        e.dispersion = stone.designed->material.dispersion.kind != Dispersion::Kind::constant;
+        e.dispersion = stone.designed->material.disperses();
         look_on_disk(key, e);
     }
     return e;
@@ -234,14 +230,7 @@ bool DesignTables::dispatch(const CatalogueStone* shown) {
 
 void DesignTables::start_check(const std::string& key, const fs::path& file) {
     check_key_ = key;
-    check_ = std::async(std::launch::async, [file]() -> Result<std::shared_ptr<const Database>> {
-        Result<Database> opened = Database::open(file);
-        if (!opened) return Error{opened.error()};
-        if (auto damaged = find_damaged_payload(opened.value())) {
-            return Error{file.string() + ": " + *damaged};
-        }
-        return std::make_shared<const Database>(std::move(opened).value());
-    });
+    check_ = std::async(std::launch::async, [file] { return open_intact_database(file); });
 }
 
 void DesignTables::take_check() {
@@ -324,7 +313,7 @@ void DesignTables::start_next_build() {
         build_key_ = key;
         build_last_line_.clear();
         e.state = State::building;
-        e.build_started_s = seconds_now();
+        e.build_started_s = monotonic_now_s();
         log_info(who + ": building its tables (pid " + std::to_string(build_->pid()) + ", into " +
                  file_of(key, ".gemdb").string() + ")");
         return;
@@ -347,7 +336,7 @@ void DesignTables::take_build_output() {
     build_.reset();
     std::error_code ec;
     if (ok && fs::exists(file_of(build_key_, ".gemdb"), ec)) {
-        log_info(who + ": tables built in " + fixed(seconds_now() - e.build_started_s, 1) +
+        log_info(who + ": tables built in " + fixed(monotonic_now_s() - e.build_started_s, 1) +
                  " s; checking them");
         e.state = State::checking;
         return;

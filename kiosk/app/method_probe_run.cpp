@@ -5,16 +5,12 @@
 #include <chrono>
 #include <cmath>
 
+#include "app/process_info.hpp"
 #include "render/camera.hpp"
 
 namespace gem::kiosk {
 
 namespace {
-
-double seconds_now() {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now().time_since_epoch())
-        .count();
-}
 
 Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, double turn_deg,
                             const gpu::RenderTarget& target) {
@@ -83,7 +79,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
                                   const RenderChoice& base, gpu::HdrPicture& scene_picture,
                                   gpu::RenderTarget& target, const ViewState& start,
                                   double budget_ms, const ProbeOptions& options) {
-    const double began_s = seconds_now();
+    const double began_s = monotonic_now_s();
     ProbeResult result;
     // The first rung's scene holds the database, which decides how many rungs there are: the
     // table level the stone's size needs.
@@ -102,9 +98,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
     } else {
         // A design has no tables: its rungs are the trace's, with exact fire first where its
         // material disperses (the fire a design shows, stone_scene.cpp).
-        const bool fire =
-            first.value()->stone().material.dispersion.kind != Dispersion::Kind::constant;
-        result.candidates = method_ladder(0, fire);
+        result.candidates = method_ladder(0, first.value()->stone().material.disperses());
         std::erase_if(result.candidates,
                       [](const MethodCandidate& c) { return c.method != gpu::Method::trace; });
     }
@@ -124,7 +118,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
             choose_method(result.frame_ms, budget_ms, refractive_rungs(result.candidates));
         if (result.choice.fits) break;
     }
-    result.seconds = seconds_now() - began_s;
+    result.seconds = monotonic_now_s() - began_s;
     return result;
 }
 

@@ -32,11 +32,6 @@ Result<Environment> make_environment(const LookChoice& look) {
     return environment.with_intensity(look.environment_intensity);
 }
 
-// Whether the material's index changes with wavelength: a design shows fire where it does.
-bool dispersive(const Material& material) {
-    return material.dispersion.kind != Dispersion::Kind::constant;
-}
-
 Result<gpu::RingMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
     if (stone.ring == RingKind::obj && stone.ring_mesh) return *stone.ring_mesh;
     if (stone.ring == RingKind::obj) {
@@ -91,7 +86,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     // Fire where the database stores it: each colour channel traced at its own index, or as
     // the tables show it, each exit's channels moved by their direction's derivative.
     const bool fire =
-        scene->database_ ? scene->database_->params().dispersion : dispersive(geometry.material);
+        scene->database_ ? scene->database_->params().dispersion : geometry.material.disperses();
     if (fire) {
         setup.trace_dispersion =
             render.exact_fire ? gpu::TraceDispersion::exact : gpu::TraceDispersion::first_order;

@@ -61,4 +61,13 @@ std::optional<std::string> find_damaged_payload(const Database& database) {
     return damaged;
 }
 
+Result<std::shared_ptr<const Database>> open_intact_database(const std::filesystem::path& path) {
+    Result<Database> opened = Database::open(path);
+    if (!opened) return Error{opened.error()};
+    if (auto damaged = find_damaged_payload(opened.value())) {
+        return Error{path.string() + ": " + *damaged};
+    }
+    return std::make_shared<const Database>(std::move(opened).value());
+}
+
 }  // namespace gem::kiosk

@@ -4,6 +4,8 @@
 // header, sections and index, and only decode() checks a payload, too late for a catalogue
 // that must be refused before it goes on screen.
 
+#include <filesystem>
+#include <memory>
 #include <optional>
 #include <string>
 
@@ -14,5 +16,9 @@ namespace gem::kiosk {
 // The first damaged payload as "view V level L: checksum mismatch", or nothing when every
 // payload is intact. Reads the file the database was opened from, with pread(2).
 std::optional<std::string> find_damaged_payload(const Database& database);
+
+// The database at `path`, opened and every payload checked, ready to go on screen; errors name
+// the file ("<path>: view 12 level 0: checksum mismatch"). For catalogues and designs' tables.
+Result<std::shared_ptr<const Database>> open_intact_database(const std::filesystem::path& path);
 
 }  // namespace gem::kiosk

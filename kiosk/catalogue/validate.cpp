@@ -53,12 +53,9 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
             }
             stone.designed = std::make_shared<const Stone>(std::move(designed).value());
         } else {
-            Result<Database> opened = Database::open(stone.database);
+            auto opened = open_intact_database(stone.database);
             if (!opened) return reject(relative_message(opened.error(), stone.database, real));
-            if (auto damaged = find_damaged_payload(opened.value())) {
-                return reject(stone.database.lexically_relative(real).string() + ": " + *damaged);
-            }
-            stone.opened = std::make_shared<const Database>(std::move(opened).value());
+            stone.opened = std::move(opened).value();
         }
         if (stone.ring == RingKind::obj) {
             Result<gpu::RingMesh> mesh =
