@@ -107,10 +107,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     if (!renderer) return fail(renderer.error());
     gpu::FrameRenderer& r = renderer.value();
     if (const gpu::TraceMethod* trace = r.trace(); trace != nullptr && r.stone().convex) {
-        std::printf(
-            "gemrender: trace finds exits by %s (64×64 test: walk %.2f ms, constants "
-            "%.2f ms)\n",
-            gpu::to_string(trace->exit_search()), trace->walk_ms(), trace->constants_ms());
+        std::printf("gemrender: trace finds exits by %s (64×64 test: %s)\n",
+                    gpu::to_string(trace->exit_search()), trace->measurement().c_str());
     }
     auto target = gpu::RenderTarget::make(scene.width, scene.height);
     if (!target) return fail(target.error());

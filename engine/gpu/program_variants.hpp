@@ -27,9 +27,10 @@ enum ShaderFeature : std::uint32_t {
     kFireFirstOrder = 1u << 2,  // FIRE_FIRST_ORDER: exit directions moved per channel by d/dn
     kFireExact = 1u << 3,       // FIRE_EXACT: each channel traced at its own index (trace)
     kTwoViews = 1u << 4,        // TWO_VIEWS: a blend of two stored views (table)
+    kAbsorbing = 1u << 5,       // ABSORBING: the body absorbs (Beer-Lambert, shading.glsl)
 };
-// Bits 5-7 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
-inline constexpr std::uint32_t kLightCountShift = 5;
+// Bits 6-8 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
+inline constexpr std::uint32_t kLightCountShift = 6;
 inline constexpr std::uint32_t kLightCountBits = 7u << kLightCountShift;
 constexpr std::uint32_t light_count_feature(int lights) {
     return static_cast<std::uint32_t>(lights) << kLightCountShift;
@@ -42,7 +43,7 @@ constexpr int light_count_of(std::uint32_t features) {
     return static_cast<int>((features & kLightCountBits) >> kLightCountShift);
 }
 inline constexpr std::uint32_t kShadingFeatures =
-    kThesisShading | kCubeAtInfinity | kLightCountBits;
+    kThesisShading | kCubeAtInfinity | kAbsorbing | kLightCountBits;
 
 // The #defines of `features`, in bit order, the light count last (none for no lights).
 std::vector<std::string> feature_defines(std::uint32_t features);

@@ -12,6 +12,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "render/camera.hpp"
+#include "trace/folded_exit.hpp"
 
 namespace gem::gpu {
 namespace {
@@ -34,9 +35,50 @@ std::string exit_planes_define(const Stone& stone) {
     return text;
 }
 
-ProgramVariants convex_programs(const Stone& stone, ExitSearch search) {
-    if (search == ExitSearch::constants) {
-        return ProgramVariants("trace", {"EXIT_UNROLLED", exit_planes_define(stone)});
+// trace.frag's EXIT_FOLDED constants (trace/folded_exit.hpp), nine significant digits.
+std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fold) {
+    char one[200];
+    auto line = [&](const char* format, auto... values) {
+        std::snprintf(one, sizeof one, format, values...);
+        return std::string(one);
+    };
+    std::vector<std::string> defines = {"EXIT_FOLDED", line("FOLD_LEVELS %d", fold.levels()),
+                                        line("FOLD_WEDGES %d", fold.wedges())};
+    std::string mirrors = "FOLD_MIRROR_LIST";
+    for (std::size_t i = 0; i < fold.mirrors().size(); ++i) {
+        const glm::dvec2 m = fold.mirrors()[i];
+        mirrors += line("%s vec2(%.9g, %.9g)", i == 0 ? "" : ",", m.x, m.y);
+    }
+    defines.push_back(mirrors);
+    const auto& edges = fold.wedge_edges();
+    defines.push_back(line("FOLD_EDGE_LO vec2(%.9g, %.9g)", edges[0].x, edges[0].y));
+    defines.push_back(line("FOLD_EDGE_HI vec2(%.9g, %.9g)", edges[1].x, edges[1].y));
+    defines.push_back(line("FOLD_GUESS_CENTRE_Y %.9g", fold.guess_centre_y()));
+    const glm::dvec3 inverse = 1.0 / fold.guess_semi_axes();
+    defines.push_back(
+        line("FOLD_GUESS_INVERSE_AXES vec3(%.9g, %.9g, %.9g)", inverse.x, inverse.y, inverse.z));
+    std::string planes = "FOLDED_PLANES";
+    for (std::uint32_t c : fold.candidates()) {
+        const Plane& p = stone.facets[c].plane;
+        planes += line(" FOLDED_PLANE(%.9g, %.9g, %.9g, %.9g)", p.n.x, p.n.y, p.n.z, p.d);
+    }
+    defines.push_back(planes);
+    return defines;
+}
+
+// The program variants of an exit search; none for folding a stone that does not fold.
+std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch search) {
+    switch (search) {
+        case ExitSearch::constants:
+            return ProgramVariants("trace", {"EXIT_UNROLLED", exit_planes_define(stone)});
+        case ExitSearch::folded: {
+            const auto fold = FoldedExit::make(stone);
+            if (!fold) return std::nullopt;
+            return ProgramVariants("trace", folded_defines(stone, *fold));
+        }
+        case ExitSearch::walk:
+        case ExitSearch::measured:
+            break;
     }
     return ProgramVariants("trace", {});
 }
@@ -61,6 +103,8 @@ const char* to_string(ExitSearch search) {
             return "facet walk";
         case ExitSearch::constants:
             return "every plane as constants";
+        case ExitSearch::folded:
+            return "folded into one wedge";
         case ExitSearch::measured:
             return "measured";
     }
@@ -83,14 +127,15 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
                            false);
     }
     if (search != ExitSearch::measured) {
-        TraceMethod m(std::move(geometry).value(), convex_programs(stone, search), true);
+        auto programs = convex_programs(stone, search);
+        if (!programs) return Error{"trace: the stone's planes are not mirrored to fold them"};
+        TraceMethod m(std::move(geometry).value(), std::move(programs).value(), true);
         m.search_ = search;
         return m;
     }
 
-    // Both searches on one small picture of the stone (a three-quarter view, the default trace
+    // Every search on one small picture of the stone (a three-quarter view, the default trace
     // settings, an empty cube): the faster of three frames each, drawn to completion.
-    ProgramVariants constants = convex_programs(stone, ExitSearch::constants);
     constexpr int kSide = 64;
     auto target = RenderTarget::make(kSide, kSide);
     auto cube = EnvironmentCube::allocate(8);
@@ -106,7 +151,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     glGetIntegerv(GL_VIEWPORT, viewport);
     target.value().bind();
     StoneFrame frame{&stone, stone.material, camera.value(), {}, &cube.value(), 0.0, 2.0 * radius};
-    TraceMethod m(std::move(geometry).value(), convex_programs(stone, ExitSearch::walk), true);
+    TraceMethod m(std::move(geometry).value(), ProgramVariants("trace", {}), true);
     auto time_ms = [&]() -> Result<double> {
         double best = std::numeric_limits<double>::infinity();
         for (int i = 0; i < 3; ++i) {  // the first compiles the shader's last stages: not timed
@@ -124,21 +169,42 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
         }
         return best;
     };
-    auto walk_ms = time_ms();
-    std::swap(m.programs_, constants);
-    auto constants_ms = walk_ms ? time_ms() : Result<double>(Error{""});
+    std::optional<ProgramVariants> fastest;
+    double fastest_ms = std::numeric_limits<double>::infinity();
+    Result<bool> measured = true;
+    for (ExitSearch candidate : {ExitSearch::walk, ExitSearch::constants, ExitSearch::folded}) {
+        auto programs = convex_programs(stone, candidate);
+        if (!programs) continue;  // a stone that does not fold
+        std::swap(m.programs_, programs.value());
+        auto ms = time_ms();
+        if (!ms) {
+            measured = Error{ms.error()};
+            break;
+        }
+        m.measured_ms_[static_cast<int>(candidate)] = ms.value();
+        if (ms.value() < fastest_ms) {
+            fastest_ms = ms.value();
+            m.search_ = candidate;
+            fastest = std::move(m.programs_);
+        }
+    }
     glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
     glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
-    if (!walk_ms) return Error{walk_ms.error()};
-    if (!constants_ms) return Error{constants_ms.error()};
-    m.walk_ms_ = walk_ms.value();
-    m.constants_ms_ = constants_ms.value();
-    m.search_ = ExitSearch::constants;
-    if (m.walk_ms_ <= m.constants_ms_) {
-        std::swap(m.programs_, constants);  // back to the walk
-        m.search_ = ExitSearch::walk;
-    }
+    if (!measured) return Error{measured.error()};
+    m.programs_ = std::move(fastest).value();
     return m;
+}
+
+std::string TraceMethod::measurement() const {
+    std::string text;
+    char one[80];
+    for (ExitSearch s : {ExitSearch::walk, ExitSearch::constants, ExitSearch::folded}) {
+        const double ms = measured_ms(s);
+        if (ms <= 0.0) continue;
+        std::snprintf(one, sizeof one, "%s%s %.2f ms", text.empty() ? "" : ", ", to_string(s), ms);
+        text += one;
+    }
+    return text.empty() ? "not measured" : text;
 }
 
 Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& trace,

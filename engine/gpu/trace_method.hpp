@@ -2,13 +2,17 @@
 // The trace method (DESIGN.md, "Methods side by side"): exact tracing per fragment of the
 // stone pass, with the exact tracer's rules (trace/tracer.hpp: depth, weight threshold,
 // Fresnel or thesis R/T weights), shaded with shading.glsl. No tables, so it is exact at every
-// view. Non-convex stones test their triangles. Convex stones find each exit one of two ways,
-// both exact (trace.frag): by walking the facets from a first guess (a handful of planes read
-// from the uniform block per bounce; trace/facet_walk.hpp) or by testing every plane, written
-// into the shader as constants (no reads, no divergence). Which is faster depends on the GPU,
-// so by default make() times both on a small picture and keeps the faster. Shading model, cube
+// view. Non-convex stones test their triangles. Convex stones find each exit one of three
+// ways, all exact (trace.frag): by walking the facets from a first guess (a handful of planes
+// read from the uniform block per bounce; trace/facet_walk.hpp), by testing every plane,
+// written into the shader as constants (no reads, no divergence), or, for a stone with two
+// mirrors or more, by folding the ray into one wedge of its symmetry and testing the planes
+// there, also constants (trace/folded_exit.hpp). Which is fastest depends on the GPU, so by
+// default make() times each on a small picture and keeps the fastest. Shading model, cube
 // and fire are compiled into the program a draw uses (program_variants.hpp), built on first
 // use.
+
+#include <string>
 
 #include "geometry/stone.hpp"
 #include "gpu/frame_uniforms.hpp"
@@ -27,14 +31,15 @@ enum class TraceDispersion {
 };
 
 // How a convex stone's exits are found.
-enum class ExitSearch { walk, constants, measured };
+enum class ExitSearch { walk, constants, folded, measured };
 const char* to_string(ExitSearch search);
 
 class TraceMethod {
   public:
     // Uploads the stone (StoneGeometry) and builds the program (non-convex, or the convex
-    // variant `search` names; `measured` builds both and keeps the faster on a 64×64 test
-    // picture, drawn off screen; the caller's framebuffer and viewport are kept).
+    // variant `search` names: an error for `folded` on a stone that does not fold; `measured`
+    // builds each and keeps the fastest on a 64×64 test picture, drawn off screen; the caller's
+    // framebuffer and viewport are kept).
     static Result<TraceMethod> make(const Stone& stone, ExitSearch search = ExitSearch::measured);
     // Draws the stone layer for `frame` into the bound framebuffer (viewport set by caller).
     // `trace` gives depth, weight threshold, weight model (fresnel or thesis R/T factors) and
@@ -42,11 +47,13 @@ class TraceMethod {
     Result<bool> draw(const StoneFrame& frame, const TraceSettings& trace,
                       TraceDispersion dispersion = TraceDispersion::none);
 
-    // The convex search in use (walk for a non-convex stone, which uses neither), and what the
-    // measurement gave (ms for the test picture; 0 when not measured).
+    // The convex search in use (walk for a non-convex stone, which uses none), and what the
+    // measurement gave (ms for the test picture; 0 when not measured), also as a log phrase.
     ExitSearch exit_search() const { return search_; }
-    double walk_ms() const { return walk_ms_; }
-    double constants_ms() const { return constants_ms_; }
+    double measured_ms(ExitSearch search) const {
+        return search == ExitSearch::measured ? 0.0 : measured_ms_[static_cast<int>(search)];
+    }
+    std::string measurement() const;
 
   private:
     TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex);
@@ -56,8 +63,7 @@ class TraceMethod {
     ProgramVariants programs_;
     bool convex_ = true;
     ExitSearch search_ = ExitSearch::walk;
-    double walk_ms_ = 0.0;
-    double constants_ms_ = 0.0;
+    double measured_ms_[3] = {};  // walk, constants, folded
 };
 
 }  // namespace gem::gpu

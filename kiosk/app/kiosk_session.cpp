@@ -319,11 +319,8 @@ void KioskSession::rebuild_scene(double now_s) {
     log_info(framed);
     if (const gpu::TraceMethod* trace = scene_->renderer().trace();
         trace != nullptr && scene_->renderer().stone().convex) {
-        char line[160];
-        std::snprintf(
-            line, sizeof line, "trace: exits by %s (64x64 test: walk %.2f ms, constants %.2f ms)",
-            gpu::to_string(trace->exit_search()), trace->walk_ms(), trace->constants_ms());
-        log_info(line);
+        log_info(std::string("trace: exits by ") + gpu::to_string(trace->exit_search()) +
+                 " (64x64 test: " + trace->measurement() + ")");
     }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }

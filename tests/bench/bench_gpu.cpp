@@ -6,13 +6,16 @@
 // ms per frame (each bounded by glFinish) over a turn of 1° a frame at 40° elevation and of
 // its stone pass alone (between glFinish calls), the stone's pixels (counted on the CPU by the
 // exact tracer's entry test), stone-pass ms per million stone pixels, and the frame's ratio to
-// phong on the same view. The table method reads a database of the
+// phong on the same view: the methods draw their frames in turn, so the ratio is the median of
+// frame-by-frame ratios, each against the phong frame drawn just before (a busy machine slows
+// both alike). The table method reads a database of the
 // diamond at 256/1024 px every 10°, traced to the same depth. Last, the heart in ruby (not
 // convex: trace tests its triangles instead of walking facets) beside phong.
 //
-//   bench_gpu [--frames N] [--quick] [--only TEXT]
+//   bench_gpu [--frames N] [--quick] [--only TEXT] [--methods TEXT]
 // --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
 // --only: the views whose name contains TEXT (e.g. "zoom 0.62"), to repeat one comparison.
+// --methods: the methods whose name contains TEXT (e.g. "trace depth"), and phong, the base.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -122,15 +125,18 @@ long stone_pixels(const gem::Stone& stone, const gem::Camera& camera) {
     return hits;
 }
 
-struct Timing {
-    double frame_ms;  // medians
-    double stone_ms;
+// One method's renderer on one view, drawn in turn with the others (see run_view).
+struct Runner {
+    const Case* method;
+    gem::gpu::FrameRenderer renderer;
+    std::vector<double> frame_ms;
+    std::vector<double> stone_ms;
 };
 
-// Median ms per frame of one method on one view, and of its stone pass alone.
-Timing run(const Case& c, const View& v, const gem::Stone& stone,
-           const std::shared_ptr<const gem::Database>& db, const gem::Environment& environment,
-           const gem::gpu::RingMesh& ring, int frames) {
+gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::Stone& stone,
+                                      const std::shared_ptr<const gem::Database>& db,
+                                      const gem::Environment& environment,
+                                      const gem::gpu::RingMesh& ring) {
     gem::gpu::FrameSetup setup;
     setup.method = c.method;
     setup.database = c.method == Method::table ? db : nullptr;
@@ -148,34 +154,55 @@ Timing run(const Case& c, const View& v, const gem::Stone& stone,
         std::fprintf(stderr, "bench_gpu: %s\n", renderer.error().c_str());
         std::exit(1);
     }
+    return std::move(renderer).value();
+}
+
+// One frame of one method, timed: the whole frame and its stone pass alone.
+gem::gpu::FrameStats draw(gem::gpu::FrameRenderer& renderer, const gem::Camera& camera) {
+    if (auto* table = renderer.table()) {
+        const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
+        table->cache().prefetch(
+            -camera.forward(), {0.0, omega, 0.0},
+            table->level_for(table->database().camera().field_mm / camera.pixel_size()));
+        table->cache().wait_idle(std::chrono::seconds(60));  // decoding is not shading
+    }
+    auto stats = renderer.render(camera, gem::gpu::FrameWait::passes);
+    if (!stats) {
+        std::fprintf(stderr, "bench_gpu: %s\n", stats.error().c_str());
+        std::exit(1);
+    }
+    return stats.value();
+}
+
+double median(std::vector<double> samples) {
+    std::sort(samples.begin(), samples.end());
+    return samples[samples.size() / 2];
+}
+
+// Every method on one view, frame by frame in turn (phong, table, …, trace, then the next
+// frame), so that a noisy machine slows them alike: each method's ratio to phong is the median
+// of its per-frame ratios to the phong frame drawn just before it.
+std::vector<Runner> run_view(const std::vector<Case>& cases, const View& v, const gem::Stone& stone,
+                             const std::shared_ptr<const gem::Database>& db,
+                             const gem::Environment& environment, const gem::gpu::RingMesh& ring,
+                             int frames) {
+    std::vector<Runner> runners;
+    runners.reserve(cases.size());
+    for (const Case& c : cases) {
+        runners.push_back({&c, make_renderer(c, v, stone, db, environment, ring), {}, {}});
+    }
     auto target = gem::gpu::RenderTarget::make(v.width, v.height);
     target.value().bind();
-    std::vector<double> ms;
-    std::vector<double> stone_ms;
-    for (int f = -1; f < frames; ++f) {  // frame −1 warms up (program, first views)
-        const gem::Camera camera = camera_for(v, renderer.value(), ring, stone, f);
-        if (auto* table = renderer.value().table()) {
-            const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
-            table->cache().prefetch(
-                -camera.forward(), {0.0, omega, 0.0},
-                table->level_for(table->database().camera().field_mm / camera.pixel_size()));
-            table->cache().wait_idle(std::chrono::seconds(60));  // decoding is not shading
-        }
-        auto stats = renderer.value().render(camera, gem::gpu::FrameWait::passes);
-        if (!stats) {
-            std::fprintf(stderr, "bench_gpu: %s\n", stats.error().c_str());
-            std::exit(1);
-        }
-        if (f >= 0) {
-            ms.push_back(stats.value().cpu_ms);
-            stone_ms.push_back(stats.value().stone_ms);
+    for (int f = -1; f < frames; ++f) {  // frame −1 warms up (programs, first views)
+        for (Runner& r : runners) {
+            const gem::Camera camera = camera_for(v, r.renderer, ring, stone, f);
+            const gem::gpu::FrameStats stats = draw(r.renderer, camera);
+            if (f < 0) continue;
+            r.frame_ms.push_back(stats.cpu_ms);
+            r.stone_ms.push_back(stats.stone_ms);
         }
     }
-    const auto median = [](std::vector<double>& samples) {
-        std::sort(samples.begin(), samples.end());
-        return samples[samples.size() / 2];
-    };
-    return {median(ms), median(stone_ms)};
+    return runners;
 }
 
 }  // namespace
@@ -184,10 +211,12 @@ int main(int argc, char** argv) {
     int frames = 6;
     bool quick = false;
     std::string only;
+    std::string methods;
     for (int i = 1; i < argc; ++i) {
         if (std::strcmp(argv[i], "--frames") == 0 && i + 1 < argc) frames = std::atoi(argv[++i]);
         if (std::strcmp(argv[i], "--quick") == 0) quick = true;
         if (std::strcmp(argv[i], "--only") == 0 && i + 1 < argc) only = argv[++i];
+        if (std::strcmp(argv[i], "--methods") == 0 && i + 1 < argc) methods = argv[++i];
     }
     if (quick) frames = std::min(frames, 3);
     frames = std::max(frames, 1);
@@ -234,6 +263,12 @@ int main(int argc, char** argv) {
           {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
          {{"phong", Method::phong}, {"trace depth 7 (mesh)", Method::trace}}}};
     if (quick) subjects.resize(1);
+    for (Subject& st : subjects) {
+        std::erase_if(st.cases, [&](const Case& c) {
+            return c.method != Method::phong &&
+                   std::string(c.name).find(methods) == std::string::npos;
+        });
+    }
     for (const Subject& st : subjects) {
         for (const View& v : st.views) {
             if (!only.empty() && std::string(v.name).find(only) == std::string::npos) continue;
@@ -251,14 +286,19 @@ int main(int argc, char** argv) {
                 camera_for(v, probe.value(), ring.value(), *st.stone, frames / 2);
             const long pixels = stone_pixels(*st.stone, middle);
             const double mpx = pixels / 1e6;
-            double phong_ms = 0.0;
-            for (const Case& c : st.cases) {
-                const Timing t = run(c, v, *st.stone, db, environment, ring.value(), frames);
-                if (c.method == Method::phong) phong_ms = t.frame_ms;
-                std::printf("%-18s %-24s %9.1f %9.1f %9.3f %7.1f%% %10.1f %8.2f\n", v.name, c.name,
-                            t.frame_ms, t.stone_ms, mpx,
+            const std::vector<Runner> runners =
+                run_view(st.cases, v, *st.stone, db, environment, ring.value(), frames);
+            const Runner& phong = runners.front();  // every subject's first case
+            for (const Runner& r : runners) {
+                std::vector<double> ratios;
+                for (std::size_t f = 0; f < r.frame_ms.size(); ++f) {
+                    ratios.push_back(r.frame_ms[f] / phong.frame_ms[f]);
+                }
+                const double stone_ms = median(r.stone_ms);
+                std::printf("%-18s %-24s %9.1f %9.1f %9.3f %7.1f%% %10.1f %8.2f\n", v.name,
+                            r.method->name, median(r.frame_ms), stone_ms, mpx,
                             100.0 * pixels / (static_cast<double>(v.width) * v.height),
-                            t.stone_ms / mpx, t.frame_ms / phong_ms);
+                            stone_ms / mpx, median(ratios));
                 std::fflush(stdout);
             }
         }

@@ -49,9 +49,9 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
             ++built;
         }
     }
-    // table, table_non_convex and trace test four switches (16 each), trace_non_convex two,
+    // table, table_non_convex and trace test five switches (32 each), trace_non_convex three,
     // each with 0 .. 4 lights; the ring and phong, the light count only.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (16 + 16 + 16 + 4 + 1 + 1));
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 32 + 8 + 1 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }

@@ -306,11 +306,13 @@ TEST(GpuTraceMethod, ThesisWeightsWithColourAndAlphaMatchCpuTracer) {
     expect_close(compare(c), 45.0, 44.0);
 }
 
-// Both ways of finding a convex stone's exits, each forced (the default measures and keeps one).
-TEST(GpuTraceMethod, FacetWalkAndConstantPlanesBothMatchCpuTracer) {
-    for (gpu::ExitSearch search : {gpu::ExitSearch::walk, gpu::ExitSearch::constants}) {
+// Every way of finding a convex stone's exits, each forced (the default measures and keeps
+// one).
+TEST(GpuTraceMethod, FacetWalkConstantPlanesAndFoldingAllMatchCpuTracer) {
+    for (gpu::ExitSearch search :
+         {gpu::ExitSearch::walk, gpu::ExitSearch::constants, gpu::ExitSearch::folded}) {
         Case c;
-        c.name = search == gpu::ExitSearch::walk ? "walk" : "constants";
+        c.name = gpu::to_string(search);
         c.camera = three_quarter_view();
         c.trace = trace_settings(12);
         c.shading.lights = two_lights();
@@ -327,14 +329,34 @@ TEST(GpuTraceMethod, MeasuredSearchSaysWhatItChoseAndWhy) {
     auto method = gpu::TraceMethod::make(stone.value());
     ASSERT_TRUE(method.ok()) << method.error();
     const auto& m = method.value();
-    ASSERT_GT(m.walk_ms(), 0.0);
-    ASSERT_GT(m.constants_ms(), 0.0);
-    EXPECT_EQ(m.exit_search(),
-              m.walk_ms() <= m.constants_ms() ? gpu::ExitSearch::walk : gpu::ExitSearch::constants);
+    const gpu::ExitSearch all[] = {gpu::ExitSearch::walk, gpu::ExitSearch::constants,
+                                   gpu::ExitSearch::folded};
+    for (gpu::ExitSearch s : all) ASSERT_GT(m.measured_ms(s), 0.0) << gpu::to_string(s);
+    for (gpu::ExitSearch s : all) {
+        EXPECT_LE(m.measured_ms(m.exit_search()), m.measured_ms(s)) << gpu::to_string(s);
+    }
+    EXPECT_NE(m.measurement().find("folded into one wedge"), std::string::npos);
     auto forced = gpu::TraceMethod::make(stone.value(), gpu::ExitSearch::walk);
     ASSERT_TRUE(forced.ok()) << forced.error();
     EXPECT_EQ(forced.value().exit_search(), gpu::ExitSearch::walk);
-    EXPECT_EQ(forced.value().walk_ms(), 0.0);  // not measured
+    EXPECT_EQ(forced.value().measured_ms(gpu::ExitSearch::walk), 0.0);  // not measured
+    EXPECT_EQ(forced.value().measurement(), "not measured");
+}
+
+TEST(GpuTraceMethod, FoldingAStoneWithOneMirrorIsRefused) {
+    // The pear has one mirror (make_cut.cpp): nothing to fold by, so a forced fold fails with
+    // one message and the measured choice leaves folding out.
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto pear = make_cut(default_cut_params(CutShape::pear), material_for(Case{}));
+    ASSERT_TRUE(pear.ok()) << pear.error();
+    auto forced = gpu::TraceMethod::make(pear.value(), gpu::ExitSearch::folded);
+    ASSERT_FALSE(forced.ok());
+    EXPECT_NE(forced.error().find("not mirrored"), std::string::npos) << forced.error();
+    auto measured = gpu::TraceMethod::make(pear.value());
+    ASSERT_TRUE(measured.ok()) << measured.error();
+    EXPECT_NE(measured.value().exit_search(), gpu::ExitSearch::folded);
+    EXPECT_EQ(measured.value().measured_ms(gpu::ExitSearch::folded), 0.0);
 }
 
 // The triangle path (NON_CONVEX: Moller-Trumbore in float, cleft stack) on a stone the plane

@@ -1,18 +1,16 @@
 // The facet walk (trace/facet_walk.hpp) against the full search over every facet
 // (convex_intersector.cpp), which it must agree with exactly: the same exit facet and the same
-// t on every ray, never an endless walk. Rays: internal paths of pixel rays (entry refraction,
-// then reflections, as the tracer follows them), rays from inside aimed exactly at corners and
-// at points on edges, and rays that start on a corner or an edge.
+// t on every ray (trace_exit_rays.hpp), never an endless walk.
 #include <gtest/gtest.h>
 
 #include <filesystem>
 #include <random>
 
 #include "import/load_model.hpp"
-#include "optics/fresnel.hpp"
 #include "trace/facet_walk.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"
+#include "trace_exit_rays.hpp"
 #include "util/cube_faces.hpp"
 
 namespace gem {
@@ -42,77 +40,14 @@ void check(const FacetWalk& walk, const Intersector& full, const glm::dvec3& o, 
     }
 }
 
-glm::dvec3 random_unit(std::mt19937_64& rng) {
-    std::normal_distribution<double> g;
-    return glm::normalize(glm::dvec3(g(rng), g(rng), g(rng)));
-}
-
-// A point strictly inside: the mean of the corners, nudged toward a random vertex.
-glm::dvec3 inside_point(const Stone& s, std::mt19937_64& rng) {
-    glm::dvec3 centre(0.0);
-    for (const glm::dvec3& v : s.vertices) centre += v;
-    centre /= static_cast<double>(s.vertices.size());
-    std::uniform_int_distribution<std::size_t> pick(0, s.vertices.size() - 1);
-    std::uniform_real_distribution<double> share(0.0, 0.95);
-    return centre + share(rng) * (s.vertices[pick(rng)] - centre);
-}
-
 Tally walk_every_kind_of_ray(const Stone& s, int pixel_rays, int depth) {
     const FacetWalk walk(s);
     const auto full = make_convex_intersector(s);
-    std::mt19937_64 rng(7);
     Tally tally;
-    const double radius = [&] {
-        double r = 0.0;
-        for (const glm::dvec3& v : s.vertices) r = std::max(r, glm::length(v));
-        return r;
-    }();
-    // Internal paths of rays from outside, reflected inside as the tracer does.
-    for (int i = 0; i < pixel_rays; ++i) {
-        const glm::dvec3 d = random_unit(rng);
-        glm::dvec3 side = glm::normalize(glm::cross(d, random_unit(rng)));
-        std::uniform_real_distribution<double> offset(-radius, radius);
-        const glm::dvec3 o = -2.0 * radius * d + offset(rng) * side;
-        SurfaceHit hit;
-        if (!full->next_entry(o, d, kNoFacet, hit)) continue;
-        auto in = refract(d, s.facets[hit.facet].plane.n, 1.0, test::kDiamondIndex);
-        if (!in) continue;
-        glm::dvec3 p = hit.point;
-        glm::dvec3 dir = *in;
-        std::uint32_t from = hit.facet;
-        for (int k = 0; k < depth; ++k) {
-            check(walk, *full, p, dir, from, tally, s.name);
-            SurfaceHit out;
-            if (!full->next_exit(p, dir, from, out)) break;
-            p = out.point;
-            dir = reflect(dir, s.facets[out.facet].plane.n);
-            from = out.facet;
-        }
-    }
-    // Aimed exactly at every corner and at points along every edge, from inside.
-    for (const Facet& f : s.facets) {
-        for (std::size_t i = 0; i < f.loop.size(); ++i) {
-            const glm::dvec3 a = s.vertices[f.loop[i]];
-            const glm::dvec3 b = s.vertices[f.loop[(i + 1) % f.loop.size()]];
-            for (double share : {0.0, 0.5, 1.0 / 3.0}) {
-                const glm::dvec3 target = a + share * (b - a);
-                const glm::dvec3 o = inside_point(s, rng);
-                check(walk, *full, o, glm::normalize(target - o), kNoFacet, tally, s.name);
-            }
-        }
-    }
-    // Starting on a corner or an edge of facet f, into the stone.
-    for (std::uint32_t f = 0; f < s.facets.size(); ++f) {
-        const auto& loop = s.facets[f].loop;
-        const glm::dvec3 a = s.vertices[loop[0]];
-        const glm::dvec3 b = s.vertices[loop[1]];
-        for (const glm::dvec3& start : {a, 0.5 * (a + b)}) {
-            for (int k = 0; k < 8; ++k) {
-                const glm::dvec3 d = glm::normalize(inside_point(s, rng) - start);
-                check(walk, *full, start, d, f, tally, s.name);
-            }
-        }
-    }
+    test::for_every_kind_of_exit_ray(
+        s, pixel_rays, depth, [&](const glm::dvec3& o, const glm::dvec3& d, std::uint32_t from) {
+            check(walk, *full, o, d, from, tally, s.name);
+        });
     return tally;
 }
 
@@ -153,8 +88,8 @@ TEST(FacetWalk, AnyStartingFacetEndsOnTheExit) {
     std::mt19937_64 rng(11);
     int walks = 0;
     for (int i = 0; i < 200; ++i) {
-        const glm::dvec3 o = inside_point(s, rng);
-        const glm::dvec3 d = random_unit(rng);
+        const glm::dvec3 o = test::inside_point(s, rng);
+        const glm::dvec3 d = test::random_unit(rng);
         SurfaceHit expected;
         ASSERT_TRUE(full->next_exit(o, d, kNoFacet, expected));
         for (std::uint32_t start = 0; start < s.facets.size(); ++start) {

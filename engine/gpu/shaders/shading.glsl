@@ -5,7 +5,8 @@
 //  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))
 // E is the environment through the virtual cube, L the lights' specular lobes with the
 // obstruction test. SHADING_THESIS picks the thesis' form, CUBE_AT_INFINITY a cube infinitely
-// far (program_variants.hpp: paths are compiled in, not picked by uniforms).
+// far, ABSORBING a body that absorbs (sigma > 0; program_variants.hpp: paths are compiled in,
+// not picked by uniforms).
 
 #ifndef MAX_LIGHTS
 #define MAX_LIGHTS 4
@@ -125,7 +126,10 @@ vec3 shade_exit(vec3 p, vec3 d, vec3 n, float weight, float path_mm, vec3 env) {
     return weight * (u_stone_colour * light_specular(p, d, n, u_k_st) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
 #else
-    vec3 transmittance = exp(-u_absorption * path_mm);
-    return weight * transmittance * (env + light_specular(p, d, n, u_k_st));
+#ifdef ABSORBING
+    return weight * exp(-u_absorption * path_mm) * (env + light_specular(p, d, n, u_k_st));
+#else
+    return weight * (env + light_specular(p, d, n, u_k_st));  // exp(0) per exit skipped
+#endif
 #endif
 }

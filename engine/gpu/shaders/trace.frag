@@ -5,8 +5,10 @@
 // shaded ray needs no storage). Depth counts segments, branches below u_min_weight are cut,
 // TIR keeps everything: the same rules as the CPU.
 // Convex stones: one branch at a time, and each exit found by walking the facets from a first
-// guess (trace/facet_walk.hpp, the CPU twin), or with EXIT_UNROLLED by testing every plane,
-// written into the shader as constants (trace_method.cpp measures which is faster).
+// guess (trace/facet_walk.hpp, the CPU twin), with EXIT_UNROLLED by testing every plane,
+// written into the shader as constants, or with EXIT_FOLDED by folding the ray into one wedge
+// of a mirror-symmetric stone and testing the few planes there, also constants
+// (trace/folded_exit.hpp, the CPU twin). trace_method.cpp measures which is fastest.
 // NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that may
 // re-enter through the cleft wait on a small fixed stack as on the CPU.
 in vec3 v_position;  // the entry point, interpolated
@@ -83,6 +85,102 @@ int exit_by_constants(vec3 o, vec3 d, int from_facet, out float t_hit) {
     int facet = -1;
     STONE_EXIT_PLANES
     return facet;
+}
+#endif
+
+#ifdef EXIT_FOLDED
+// trace/folded_exit.hpp: FOLD_LEVELS mirrors after x = 0 and z = 0 (FOLD_MIRROR_LIST, unit
+// normals in x, z), the widened first wedge (FOLD_EDGE_LO, FOLD_EDGE_HI), the guess ellipsoid
+// (FOLD_GUESS_CENTRE_Y, FOLD_GUESS_INVERSE_AXES: 1 / semi-axes), and FOLDED_PLANES: one
+// FOLDED_PLANE(n.x, n.y, n.z, d) per facet touching the widened first wedge.
+#if FOLD_LEVELS > 0
+const vec2 kFoldMirror[FOLD_LEVELS] = vec2[](FOLD_MIRROR_LIST);
+#endif
+const float kFacingMin = 1e-6;  // folded_exit.hpp: kFacingMin
+
+vec2 reflect_across(vec2 p, vec2 m, bool across) {
+    return across ? p - 2.0 * dot(p, m) * m : p;
+}
+
+// The fold that takes point p into the first wedge, as bits (folded_exit.cpp: fold_bits).
+uint fold_bits(vec2 p) {
+    uint bits = (p.x < 0.0 ? 1u : 0u) | (p.y < 0.0 ? 2u : 0u);
+    p = abs(p);
+#if FOLD_LEVELS > 0
+    for (int i = 0; i < FOLD_LEVELS; ++i) {
+        bool beyond = dot(p, kFoldMirror[i]) > 0.0;
+        p = reflect_across(p, kFoldMirror[i], beyond);
+        bits |= beyond ? (4u << uint(i)) : 0u;
+    }
+#endif
+    return bits;
+}
+
+vec3 fold_vector(vec3 v, uint bits) {
+    vec2 p = vec2((bits & 1u) != 0u ? -v.x : v.x, (bits & 2u) != 0u ? -v.z : v.z);
+#if FOLD_LEVELS > 0
+    for (int i = 0; i < FOLD_LEVELS; ++i) {
+        p = reflect_across(p, kFoldMirror[i], (bits & (4u << uint(i))) != 0u);
+    }
+#endif
+    return vec3(p.x, v.y, p.y);
+}
+
+vec3 unfold_vector(vec3 v, uint bits) {
+    vec2 p = v.xz;
+#if FOLD_LEVELS > 0
+    for (int i = FOLD_LEVELS - 1; i >= 0; --i) {
+        p = reflect_across(p, kFoldMirror[i], (bits & (4u << uint(i))) != 0u);
+    }
+#endif
+    return vec3((bits & 1u) != 0u ? -p.x : p.x, v.y, (bits & 2u) != 0u ? -p.y : p.y);
+}
+
+#define FOLDED_PLANE(nx, ny, nz, w)                                     \
+    {                                                                   \
+        float f = dot(vec3(nx, ny, nz), df);                            \
+        float t = max(w - dot(vec3(nx, ny, nz), of), 0.0) / f;          \
+        bool better = f > kFacingMin && t < t_round;                    \
+        t_round = better ? t : t_round;                                 \
+        n_round = better ? vec3(nx, ny, nz) : n_round;                  \
+    }
+
+// The exit of the ray from o along d inside the stone: t, and the exit facet's normal.
+float exit_by_folding(vec3 o, vec3 d, out vec3 n_exit) {
+    // The first guess: where the ray leaves the ellipsoid, scaled to the unit sphere.
+    vec3 q = (o - vec3(0.0, FOLD_GUESS_CENTRE_Y, 0.0)) * FOLD_GUESS_INVERSE_AXES;
+    vec3 e = d * FOLD_GUESS_INVERSE_AXES;
+    float a = dot(e, e);
+    float b = dot(q, e);
+    float c = dot(q, q) - 1.0;
+    vec2 target = (o + ((-b + sqrt(max(b * b - a * c, 0.0))) / a) * d).xz;
+    uint visited = 0u;
+    float t_hit = 1e30;
+    vec3 n_best = vec3(0.0);  // in the wedge of bits_best
+    uint bits_best = 0u;
+    for (int round = 0; round < FOLD_WEDGES; ++round) {
+        uint bits = fold_bits(target);
+        if (((visited >> bits) & 1u) != 0u) break;  // its wedge was seen: the point is the exit
+        visited |= 1u << bits;
+        vec3 of = fold_vector(o, bits);
+        vec3 df = fold_vector(d, bits);
+        float t_round = t_hit;
+        vec3 n_round = vec3(0.0);
+        FOLDED_PLANES
+        bool improved = t_round < t_hit;
+        n_best = improved ? n_round : n_best;
+        bits_best = improved ? bits : bits_best;
+        t_hit = t_round;
+        if (t_hit >= 1e30) {
+            target = d.xz;  // nothing ahead here: the wedge d points into
+            continue;
+        }
+        vec2 p = (of + t_hit * df).xz;
+        if (dot(FOLD_EDGE_LO, p) >= 0.0 && dot(FOLD_EDGE_HI, p) >= 0.0) break;
+        target = (o + t_hit * d).xz;
+    }
+    n_exit = unfold_vector(n_best, bits_best);
+    return t_hit;
 }
 #endif
 
@@ -166,14 +264,21 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
     for (int depth = 1; depth <= u_max_depth; ++depth) {
         if (weight <= 0.0 || weight < u_min_weight) break;
         float t;
+        vec3 n;
+#ifdef EXIT_FOLDED
+        t = exit_by_folding(o, d, n);
+        if (t >= 1e30) break;  // a closed solid always has an exit
+        int exit_facet = from;  // unused: folding needs no index (folded_exit.hpp)
+#else
 #ifdef EXIT_UNROLLED
         int exit_facet = exit_by_constants(o, d, from, t);
 #else
         int exit_facet = exit_by_walk(o, d, from, t);
 #endif
         if (exit_facet < 0) break;  // a closed solid always has one
+        n = facet_plane(exit_facet).xyz;
+#endif
         vec3 p = o + t * d;
-        vec3 n = facet_plane(exit_facet).xyz;
         path += t;
         vec2 split = split_weight(dot(d, n), ior, kAir);
         vec3 out_dir;

@@ -1,0 +1,102 @@
+#pragma once
+// The exit of a ray inside a convex stone with mirror symmetry about its axis (y), found among
+// a few planes by folding the ray into one wedge of the symmetry: the CPU twin of the trace
+// shader's EXIT_FOLDED search (trace.frag), beside the facet walk (trace/facet_walk.hpp).
+//
+// Why: a SIMD rasteriser runs every instruction for all its lanes, so the exit search costs
+// the same for every pixel whatever the ray does. Testing every plane costs ~13 operations
+// per facet and bounce (89 facets on a brilliant); a walk reads scattered planes per lane.
+// Folding keeps the planes as constants and tests a fifth of them.
+//
+// How: a stone whose facet planes are mirrored onto each other by the planes x = 0 and z = 0
+// and by the mirrors at azimuths 45°, 22.5°, 11.25° (C2v, C4v, C8v, C16v about y) looks the
+// same from every wedge between neighbouring mirrors. Fold a point into the first wedge
+// (|x|, |z|, then a reflection across each smaller mirror it lies beyond); the same
+// reflections, applied to a ray, make the stone's wedge around that point the first wedge.
+// There only the facets that touch the first wedge can hold the point, so a ray's exit, when
+// it lies in that wedge, is found among those planes alone. The wedge is widened on each side
+// as far as it goes (up to half its angle) without touching another facet: points near its
+// edges then need no second round.
+//
+// The search: fold the ray by the wedge of a first guess (where the ray leaves the ellipsoid
+// of the stone's bounding box), take the nearest forward plane among the wedge's facets, and check
+// that the point lies in the widened wedge. If it does, it is the exit: the point is inside every
+// plane of the facets that bound the stone in that wedge, so inside the stone, and on its
+// surface; a ray from inside meets the surface once. If not, fold by the point's own wedge and
+// take the nearest plane over all wedges seen so far; a point in a wedge already seen is the
+// exit for the same reason. Each round sees a new wedge, so the search ends, at the latest
+// when it has seen every plane.
+//
+// The facet a ray starts on faces away from it (it was refracted or reflected inward), so
+// forward means n·d > kFacingMin, not an index test: the fold changes facet indices.
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <vector>
+
+#include "geometry/stone.hpp"
+#include "trace/intersector.hpp"
+
+namespace gem {
+
+struct FoldCost {
+    std::uint64_t searches = 0;
+    std::uint64_t rounds = 0;  // wedges folded into
+    std::uint64_t planes = 0;  // planes tested
+    int most_rounds = 0;
+};
+
+class FoldedExit {
+  public:
+    // Mirrors folded by, after |x| and |z|: up to three (45°, 22.5°, 11.25°).
+    static constexpr int kMaxLevels = 3;
+    // n·d above which a plane faces the ray forward (see above).
+    static constexpr double kFacingMin = 1e-6;
+
+    // The fold of a convex stone, or nothing when its planes are not mirrored onto each other
+    // by at least x = 0 and z = 0.
+    static std::optional<FoldedExit> make(const Stone& stone);
+
+    // As Intersector::next_exit (from_facet is not needed: see above).
+    bool next_exit(const glm::dvec3& origin, const glm::dvec3& direction, SurfaceHit& hit,
+                   FoldCost* cost = nullptr) const;
+
+    // What the shader is built from.
+    int levels() const { return levels_; }
+    int wedges() const { return 4 << levels_; }
+    // Unit normals (x, z) of the mirror lines folded across, pointing beyond them.
+    const std::vector<glm::dvec2>& mirrors() const { return mirrors_; }
+    // The widened first wedge: points p with dot(edge, p.xz) >= 0 for both edges, and its
+    // widening on each side (radians).
+    const std::array<glm::dvec2, 2>& wedge_edges() const { return edges_; }
+    double margin() const { return margin_; }
+    // The facets touching the widened first wedge (indices into stone.facets).
+    const std::vector<std::uint32_t>& candidates() const { return candidates_; }
+    // The first guess's ellipsoid, the stone's bounding box's: centre height and semi-axes.
+    double guess_centre_y() const { return centre_y_; }
+    const glm::dvec3& guess_semi_axes() const { return semi_axes_; }
+
+    // The fold of a point's wedge as bits (bit 0: x negated, bit 1: z negated, bit 2 + i:
+    // reflected across mirror i), and a vector folded or unfolded by such bits.
+    std::uint32_t fold_bits(glm::dvec2 xz) const;
+    glm::dvec3 fold(glm::dvec3 v, std::uint32_t bits) const;
+    glm::dvec3 unfold(glm::dvec3 v, std::uint32_t bits) const;
+    // Where the ray leaves the guess ellipsoid.
+    glm::dvec3 guess(const glm::dvec3& origin, const glm::dvec3& direction) const;
+
+  private:
+    FoldedExit() = default;
+    std::vector<Plane> planes_;
+    int levels_ = 0;
+    std::vector<glm::dvec2> mirrors_;
+    std::array<glm::dvec2, 2> edges_{};
+    double margin_ = 0.0;
+    std::vector<std::uint32_t> candidates_;
+    // The facet that candidate c becomes when unfolded by bits: [bits * candidates + c].
+    std::vector<std::uint32_t> unfolded_facet_;
+    double centre_y_ = 0.0;
+    glm::dvec3 semi_axes_{1.0};
+};
+
+}  // namespace gem
