@@ -53,6 +53,7 @@ std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fo
     const auto& edges = fold.wedge_edges();
     defines.push_back(line("FOLD_EDGE_LO vec2(%.9g, %.9g)", edges[0].x, edges[0].y));
     defines.push_back(line("FOLD_EDGE_HI vec2(%.9g, %.9g)", edges[1].x, edges[1].y));
+    defines.push_back(line("FOLD_INSIDE %.9g", fold.inside()));
     defines.push_back(line("FOLD_GUESS_CENTRE_Y %.9g", fold.guess_centre_y()));
     const glm::dvec3 inverse = 1.0 / fold.guess_semi_axes();
     defines.push_back(

@@ -9,10 +9,6 @@
 namespace gem {
 namespace {
 
-// Candidates are chosen for a wedge wider than the one points are checked against by this
-// much (radians): a point a float rounding outside the checked wedge still finds its facet.
-constexpr double kSlack = 1e-3;
-
 glm::dvec2 xz(const glm::dvec3& v) {
     return {v.x, v.z};
 }
@@ -26,14 +22,15 @@ glm::dvec2 mirror_normal(double beta) {
     return {-std::sin(beta), std::cos(beta)};
 }
 
-// True when the polygon's outline seen along y meets the wedge of angles [lo, hi] (hi - lo
-// below pi) farther than `off_axis` mm from the axis: the polygon clipped by the wedge's two
-// half-planes keeps such a point. A facet that meets the wedge only on the axis (a pavilion
-// main at the culet) shares that point with facets that do count. (The wedge is already wider
-// than the one points are checked against, so the clipping needs no tolerance of its own.)
-bool touches_wedge(const std::vector<glm::dvec2>& polygon, double lo, double hi, double off_axis) {
-    const std::array<glm::dvec2, 2> inward = {glm::dvec2(-std::sin(lo), std::cos(lo)),
-                                              glm::dvec2(std::sin(hi), -std::cos(hi))};
+// True when the polygon's outline seen along y reaches inside the wedge of angles [0, beta]
+// (beta below pi): the part of it the wedge's two half-planes keep has its centre farther
+// than `tolerance` mm inside both. A facet that only touches the wedge's edges (a mirror
+// line, or the axis: a pavilion main at the culet) does not count: where it touches, its
+// mirror image across that line touches too, from inside, and a point on a mirror line lies
+// outside a facet's plane exactly when it lies outside its image's.
+bool reaches_inside(const std::vector<glm::dvec2>& polygon, double beta, double tolerance) {
+    const std::array<glm::dvec2, 2> inward = {glm::dvec2(0.0, 1.0),
+                                              glm::dvec2(std::sin(beta), -std::cos(beta))};
     std::vector<glm::dvec2> kept = polygon;
     for (const glm::dvec2& e : inward) {
         std::vector<glm::dvec2> next;
@@ -48,8 +45,10 @@ bool touches_wedge(const std::vector<glm::dvec2>& polygon, double lo, double hi,
         kept = std::move(next);
         if (kept.empty()) return false;
     }
-    return std::any_of(kept.begin(), kept.end(),
-                       [&](const glm::dvec2& p) { return glm::length(p) > off_axis; });
+    glm::dvec2 centre(0.0);
+    for (const glm::dvec2& k : kept) centre += k;
+    centre /= static_cast<double>(kept.size());
+    return glm::dot(inward[0], centre) > tolerance && glm::dot(inward[1], centre) > tolerance;
 }
 
 }  // namespace
@@ -96,33 +95,13 @@ std::optional<FoldedExit> FoldedExit::make(const Stone& stone) {
         wedge /= 2.0;
         ++f.levels_;
     }
-    // The facets touching the first wedge widened by `margin` on each side (and kSlack more).
-    auto touching = [&](double margin) {
-        std::vector<std::uint32_t> found;
-        for (std::uint32_t i = 0; i < stone.facets.size(); ++i) {
-            std::vector<glm::dvec2> outline;
-            for (std::uint32_t v : stone.facets[i].loop) outline.push_back(xz(stone.vertices[v]));
-            if (touches_wedge(outline, -margin - kSlack, wedge + margin + kSlack,
-                              10.0 * tolerance)) {
-                found.push_back(i);
-            }
-        }
-        return found;
-    };
-    // The widest margin, up to half the wedge, that adds no facet: free rounds saved.
-    f.candidates_ = touching(0.0);
-    for (int step = 32; step > 0; --step) {
-        const double margin = wedge * step / 64.0;
-        std::vector<std::uint32_t> found = touching(margin);
-        if (found.size() == f.candidates_.size()) {
-            f.margin_ = margin;
-            f.candidates_ = std::move(found);
-            break;
-        }
+    for (std::uint32_t i = 0; i < stone.facets.size(); ++i) {
+        std::vector<glm::dvec2> outline;
+        for (std::uint32_t v : stone.facets[i].loop) outline.push_back(xz(stone.vertices[v]));
+        if (reaches_inside(outline, wedge, 10.0 * tolerance)) f.candidates_.push_back(i);
     }
-    const double lo = -f.margin_;
-    const double hi = wedge + f.margin_;
-    f.edges_ = {glm::dvec2(-std::sin(lo), std::cos(lo)), glm::dvec2(std::sin(hi), -std::cos(hi))};
+    f.edges_ = {glm::dvec2(0.0, 1.0), glm::dvec2(std::sin(wedge), -std::cos(wedge))};
+    f.inside_ = kInside * radius;
     const auto count = static_cast<std::uint32_t>(f.candidates_.size());
     f.unfolded_facet_.resize(static_cast<std::size_t>(f.wedges()) * count);
     for (std::uint32_t bits = 0; bits < static_cast<std::uint32_t>(f.wedges()); ++bits) {
@@ -212,9 +191,20 @@ bool FoldedExit::next_exit(const glm::dvec3& origin, const glm::dvec3& direction
             target = direction;
             continue;
         }
-        target = origin + best_t * direction;
-        const glm::dvec2 folded = xz(fold(target, bits));
-        if (glm::dot(edges_[0], folded) >= 0.0 && glm::dot(edges_[1], folded) >= 0.0) break;
+        glm::dvec3 folded = fold(origin + best_t * direction, bits);
+        const double lo = glm::dot(edges_[0], xz(folded));
+        const double hi = glm::dot(edges_[1], xz(folded));
+        if (lo >= inside_ && hi >= inside_) break;
+        // Next, the wedge the point lies in; one just inside an edge is pushed across it, so
+        // the wedge beyond is tested too.
+        for (int e = 0; e < 2; ++e) {
+            const double depth = e == 0 ? lo : hi;
+            if (depth >= 0.0 && depth < inside_) {
+                folded.x -= 2.0 * inside_ * edges_[e].x;
+                folded.z -= 2.0 * inside_ * edges_[e].y;
+            }
+        }
+        target = unfold(folded, bits);
     }
     c.rounds += static_cast<std::uint64_t>(rounds);
     c.most_rounds = std::max(c.most_rounds, rounds);

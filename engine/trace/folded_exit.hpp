@@ -13,14 +13,13 @@
 // same from every wedge between neighbouring mirrors. Fold a point into the first wedge
 // (|x|, |z|, then a reflection across each smaller mirror it lies beyond); the same
 // reflections, applied to a ray, make the stone's wedge around that point the first wedge.
-// There only the facets that touch the first wedge can hold the point, so a ray's exit, when
-// it lies in that wedge, is found among those planes alone. The wedge is widened on each side
-// as far as it goes (up to half its angle) without touching another facet: points near its
-// edges then need no second round.
+// There only the facets that reach inside the first wedge can hold the point (a facet that
+// only touches a mirror line is matched there by its image from inside), so a ray's exit,
+// when it lies in that wedge, is found among those planes alone: 8 of the brilliant's 89.
 //
 // The search: fold the ray by the wedge of a first guess (where the ray leaves the ellipsoid
-// of the stone's bounding box), take the nearest forward plane among the wedge's facets, and check
-// that the point lies in the widened wedge. If it does, it is the exit: the point is inside every
+// of the stone's bounding box), take the nearest forward plane among the wedge's facets, and
+// check that the point lies in the wedge. If it does, it is the exit: the point is inside every
 // plane of the facets that bound the stone in that wedge, so inside the stone, and on its
 // surface; a ray from inside meets the surface once. If not, fold by the point's own wedge and
 // take the nearest plane over all wedges seen so far; a point in a wedge already seen is the
@@ -53,6 +52,11 @@ class FoldedExit {
     static constexpr int kMaxLevels = 3;
     // n·d above which a plane faces the ray forward (see above).
     static constexpr double kFacingMin = 1e-6;
+    // How far inside a wedge's edges (a share of the stone's radius) a point must lie to be
+    // taken as the exit in that round. Within a float's rounding of a mirror line the facet
+    // beyond it ties with its image inside; a point that close takes a round in the wedge
+    // beyond too, so both are tested and the nearer plane wins, as in the full search.
+    static constexpr double kInside = 1e-5;
 
     // The fold of a convex stone, or nothing when its planes are not mirrored onto each other
     // by at least x = 0 and z = 0.
@@ -67,11 +71,11 @@ class FoldedExit {
     int wedges() const { return 4 << levels_; }
     // Unit normals (x, z) of the mirror lines folded across, pointing beyond them.
     const std::vector<glm::dvec2>& mirrors() const { return mirrors_; }
-    // The widened first wedge: points p with dot(edge, p.xz) >= 0 for both edges, and its
-    // widening on each side (radians).
+    // The first wedge: points p with dot(edge, p.xz) >= 0 for both edges; a round's point is
+    // taken when both are at least inside() (mm).
     const std::array<glm::dvec2, 2>& wedge_edges() const { return edges_; }
-    double margin() const { return margin_; }
-    // The facets touching the widened first wedge (indices into stone.facets).
+    double inside() const { return inside_; }
+    // The facets reaching inside the first wedge (indices into stone.facets).
     const std::vector<std::uint32_t>& candidates() const { return candidates_; }
     // The first guess's ellipsoid, the stone's bounding box's: centre height and semi-axes.
     double guess_centre_y() const { return centre_y_; }
@@ -91,7 +95,7 @@ class FoldedExit {
     int levels_ = 0;
     std::vector<glm::dvec2> mirrors_;
     std::array<glm::dvec2, 2> edges_{};
-    double margin_ = 0.0;
+    double inside_ = 0.0;
     std::vector<std::uint32_t> candidates_;
     // The facet that candidate c becomes when unfolded by bits: [bits * candidates + c].
     std::vector<std::uint32_t> unfolded_facet_;

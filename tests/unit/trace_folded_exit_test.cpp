@@ -95,22 +95,24 @@ TEST(FoldedExit, AgreesWithTheFullSearchOnEveryCutWithTwoMirrors) {
     EXPECT_EQ(folded_stones, 6);
 }
 
-TEST(FoldedExit, TheBrilliantsWedgeHoldsAFifthOfItsFacets) {
-    // The point of folding: the round brilliant's 16 wedges of 22.5° (widened by
-    // FoldedExit::margin() each side) touch few facets, so a round tests few planes.
+TEST(FoldedExit, TheBrilliantsWedgeHoldsOneFacetOfEachTier) {
+    // The point of folding: a round tests few planes. The brilliant's wedge of 22.5° between
+    // two mirrors holds, counted by hand from its 8-fold layout (brilliant.cpp): the table,
+    // one star, one bezel, one upper girdle facet, one pavilion main, one lower girdle facet
+    // and two girdle facets. The facets that only touch its mirror lines (the neighbouring
+    // star, bezel, upper and lower girdle and girdle facets) and the pavilion mains that only
+    // touch the axis at the culet are left out.
     const Stone s = test::all_cuts().front();
     ASSERT_EQ(s.name, "round-brilliant");
     const auto fold = FoldedExit::make(s);
     ASSERT_TRUE(fold.has_value());
     EXPECT_EQ(fold->wedges(), 16);
-    EXPECT_LT(fold->candidates().size(), s.facets.size() / 4);
-    // The table touches every wedge; a pavilion main that meets the wedge only at the culet
-    // does not count.
-    int pavilion = 0;
-    for (std::uint32_t c : fold->candidates()) {
-        pavilion += s.facets[c].name == "pavilion main" ? 1 : 0;
-    }
-    EXPECT_LE(pavilion, 2);
+    std::map<std::string, int> tiers;
+    for (std::uint32_t c : fold->candidates()) ++tiers[s.facets[c].name];
+    const std::map<std::string, int> expected = {
+        {"table", 1},         {"star", 1},         {"bezel", 1}, {"upper girdle", 1},
+        {"pavilion main", 1}, {"lower girdle", 1}, {"girdle", 2}};
+    EXPECT_EQ(tiers, expected);
 }
 
 TEST(FoldedExit, FoldingAndUnfoldingAreInverse) {

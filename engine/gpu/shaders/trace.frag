@@ -90,9 +90,10 @@ int exit_by_constants(vec3 o, vec3 d, int from_facet, out float t_hit) {
 
 #ifdef EXIT_FOLDED
 // trace/folded_exit.hpp: FOLD_LEVELS mirrors after x = 0 and z = 0 (FOLD_MIRROR_LIST, unit
-// normals in x, z), the widened first wedge (FOLD_EDGE_LO, FOLD_EDGE_HI), the guess ellipsoid
+// normals in x, z), the first wedge's edges (FOLD_EDGE_LO, FOLD_EDGE_HI) and how far inside
+// them a point is taken (FOLD_INSIDE, mm), the guess ellipsoid
 // (FOLD_GUESS_CENTRE_Y, FOLD_GUESS_INVERSE_AXES: 1 / semi-axes), and FOLDED_PLANES: one
-// FOLDED_PLANE(n.x, n.y, n.z, d) per facet touching the widened first wedge.
+// FOLDED_PLANE(n.x, n.y, n.z, d) per facet reaching inside the first wedge.
 #if FOLD_LEVELS > 0
 const vec2 kFoldMirror[FOLD_LEVELS] = vec2[](FOLD_MIRROR_LIST);
 #endif
@@ -175,9 +176,15 @@ float exit_by_folding(vec3 o, vec3 d, out vec3 n_exit) {
             target = d.xz;  // nothing ahead here: the wedge d points into
             continue;
         }
-        vec2 p = (of + t_hit * df).xz;
-        if (dot(FOLD_EDGE_LO, p) >= 0.0 && dot(FOLD_EDGE_HI, p) >= 0.0) break;
-        target = (o + t_hit * d).xz;
+        vec3 p = of + t_hit * df;
+        float lo = dot(FOLD_EDGE_LO, p.xz);
+        float hi = dot(FOLD_EDGE_HI, p.xz);
+        if (lo >= FOLD_INSIDE && hi >= FOLD_INSIDE) break;
+        // Next, the wedge the point lies in; one just inside an edge is pushed across it, so
+        // the wedge beyond is tested too.
+        p.xz -= (lo >= 0.0 && lo < FOLD_INSIDE ? 2.0 * FOLD_INSIDE : 0.0) * FOLD_EDGE_LO;
+        p.xz -= (hi >= 0.0 && hi < FOLD_INSIDE ? 2.0 * FOLD_INSIDE : 0.0) * FOLD_EDGE_HI;
+        target = unfold_vector(p, bits).xz;
     }
     n_exit = unfold_vector(n_best, bits_best);
     return t_hit;
