@@ -159,7 +159,7 @@ float exit_by_folding(vec3 o, vec3 d, out vec3 n_exit) {
     float t_hit = 1e30;
     vec3 n_best = vec3(0.0);  // in the wedge of bits_best
     uint bits_best = 0u;
-    for (int round = 0; round < FOLD_WEDGES; ++round) {
+    for (int seen = 0; seen < FOLD_WEDGES; ++seen) {  // a round per wedge at most
         uint bits = fold_bits(target);
         if (((visited >> bits) & 1u) != 0u) break;  // its wedge was seen: the point is the exit
         visited |= 1u << bits;
