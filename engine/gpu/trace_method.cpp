@@ -21,47 +21,62 @@ namespace {
 constexpr int kEnvironmentUnit = 0;
 constexpr int kStoneUnit = 1;
 
-// trace.frag's STONE_EXIT_PLANES: one EXIT_PLANE(index, n.x, n.y, n.z, d) per facet, with
-// nine significant digits (a float's round trip).
+// A GLSL float literal with nine significant digits (a float's round trip) and always a point
+// or an exponent: "1" would be an int, and GLSL ES does not mix ints into float arithmetic.
+std::string glsl_float(double value) {
+    char text[32];
+    std::snprintf(text, sizeof text, "%.9g", value);
+    std::string literal = text;
+    if (literal.find_first_of(".e") == std::string::npos) literal += ".0";
+    return literal;
+}
+
+std::string glsl_vec2(glm::dvec2 v) {
+    return "vec2(" + glsl_float(v.x) + ", " + glsl_float(v.y) + ")";
+}
+
+// One plane's arguments to EXIT_PLANE and FOLDED_PLANE: n.x, n.y, n.z, d.
+std::string plane_arguments(const Plane& p) {
+    return glsl_float(p.n.x) + ", " + glsl_float(p.n.y) + ", " + glsl_float(p.n.z) + ", " +
+           glsl_float(p.d);
+}
+
+// trace.frag's STONE_EXIT_PLANES: one EXIT_PLANE(index, n.x, n.y, n.z, d) per facet.
 std::string exit_planes_define(const Stone& stone) {
     std::string text = "STONE_EXIT_PLANES";
-    char one[160];
     for (std::size_t i = 0; i < stone.facets.size(); ++i) {
-        const Plane& p = stone.facets[i].plane;
-        std::snprintf(one, sizeof one, " EXIT_PLANE(%zu, %.9g, %.9g, %.9g, %.9g)", i, p.n.x, p.n.y,
-                      p.n.z, p.d);
-        text += one;
+        text += " EXIT_PLANE(" + std::to_string(i) + ", " + plane_arguments(stone.facets[i].plane) +
+                ")";
     }
     return text;
 }
 
-// trace.frag's EXIT_FOLDED constants (trace/folded_exit.hpp), nine significant digits.
+// trace.frag's EXIT_FOLDED constants (trace/folded_exit.hpp).
 std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fold) {
-    char one[200];
-    auto line = [&](const char* format, auto... values) {
-        std::snprintf(one, sizeof one, format, values...);
-        return std::string(one);
-    };
-    std::vector<std::string> defines = {"EXIT_FOLDED", line("FOLD_LEVELS %d", fold.levels()),
-                                        line("FOLD_WEDGES %d", fold.wedges())};
+    std::vector<std::string> defines = {"EXIT_FOLDED",
+                                        "FOLD_LEVELS " + std::to_string(fold.levels()),
+                                        "FOLD_WEDGES " + std::to_string(fold.wedges())};
     std::string mirrors = "FOLD_MIRROR_LIST";
     for (std::size_t i = 0; i < fold.mirrors().size(); ++i) {
-        const glm::dvec2 m = fold.mirrors()[i];
-        mirrors += line("%s vec2(%.9g, %.9g)", i == 0 ? "" : ",", m.x, m.y);
+        mirrors += (i == 0 ? " " : ", ") + glsl_vec2(fold.mirrors()[i]);
     }
     defines.push_back(mirrors);
-    const auto& edges = fold.wedge_edges();
-    defines.push_back(line("FOLD_EDGE_LO vec2(%.9g, %.9g)", edges[0].x, edges[0].y));
-    defines.push_back(line("FOLD_EDGE_HI vec2(%.9g, %.9g)", edges[1].x, edges[1].y));
-    defines.push_back(line("FOLD_INSIDE %.9g", fold.inside()));
-    defines.push_back(line("FOLD_GUESS_CENTRE_Y %.9g", fold.guess_centre_y()));
-    const glm::dvec3 inverse = 1.0 / fold.guess_semi_axes();
-    defines.push_back(
-        line("FOLD_GUESS_INVERSE_AXES vec3(%.9g, %.9g, %.9g)", inverse.x, inverse.y, inverse.z));
+    defines.push_back("FOLD_EDGE_LO " + glsl_vec2(fold.wedge_edges()[0]));
+    defines.push_back("FOLD_EDGE_HI " + glsl_vec2(fold.wedge_edges()[1]));
+    defines.push_back("FOLD_INSIDE " + glsl_float(fold.inside()));
+    const TurnedOutline& o = fold.outline();
+    defines.push_back("FOLD_GUESS_Z_SCALE " + glsl_float(o.z_scale));
+    defines.push_back("FOLD_GUESS_RADIUS " + glsl_float(o.radius));
+    defines.push_back("FOLD_GUESS_Y " + glsl_vec2({o.y_min, o.y_max}));
+    if (o.pavilion_slope > 0.0) {
+        defines.push_back("FOLD_GUESS_PAVILION " + glsl_vec2({o.pavilion_slope, o.y_min}));
+    }
+    if (o.crown_slope > 0.0) {
+        defines.push_back("FOLD_GUESS_CROWN " + glsl_vec2({o.crown_slope, o.crown_apex}));
+    }
     std::string planes = "FOLDED_PLANES";
     for (std::uint32_t c : fold.candidates()) {
-        const Plane& p = stone.facets[c].plane;
-        planes += line(" FOLDED_PLANE(%.9g, %.9g, %.9g, %.9g)", p.n.x, p.n.y, p.n.z, p.d);
+        planes += " FOLDED_PLANE(" + plane_arguments(stone.facets[c].plane) + ")";
     }
     defines.push_back(planes);
     return defines;

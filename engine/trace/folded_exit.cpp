@@ -51,6 +51,58 @@ bool reaches_inside(const std::vector<glm::dvec2>& polygon, double beta, double 
     return glm::dot(inward[0], centre) > tolerance && glm::dot(inward[1], centre) > tolerance;
 }
 
+// The stone turned about its axis (TurnedOutline), from its corners; the stone is mirrored by
+// x = 0 and z = 0, so its bounding box is centred on the axis.
+TurnedOutline turned_outline(const std::vector<glm::dvec3>& corners, const glm::dvec3& low,
+                             const glm::dvec3& high) {
+    TurnedOutline s;
+    s.z_scale = (high.x - low.x) / std::max(high.z - low.z, 1e-12);
+    s.y_min = low.y;
+    s.y_max = high.y;
+    auto radius_of = [&](const glm::dvec3& v) { return std::hypot(v.x, v.z * s.z_scale); };
+    s.radius = 1e-12;
+    for (const glm::dvec3& v : corners) s.radius = std::max(s.radius, radius_of(v));
+    // The girdle: the corners within 2 % of the widest; the table: the topmost corners.
+    double girdle_low = high.y;
+    double girdle_high = low.y;
+    double table = 0.0;
+    for (const glm::dvec3& v : corners) {
+        const double r = radius_of(v);
+        if (r >= 0.98 * s.radius) {
+            girdle_low = std::min(girdle_low, v.y);
+            girdle_high = std::max(girdle_high, v.y);
+        }
+        if (v.y >= high.y - 1e-9 * s.radius) table = std::max(table, r);
+    }
+    if (girdle_low - low.y > 1e-9 * s.radius) s.pavilion_slope = s.radius / (girdle_low - low.y);
+    if (high.y - girdle_high > 1e-9 * s.radius && table < s.radius) {
+        s.crown_slope = (s.radius - table) / (high.y - girdle_high);
+        s.crown_apex = girdle_high + s.radius / s.crown_slope;
+    }
+    return s;
+}
+
+// Where the ray from o along d (z already scaled) leaves the cone r <= k side (y - apex_y),
+// side +1 opening upward, -1 downward: the least t > 0 at which it crosses the cone's own
+// nappe outward; infinity if it never does, or if k is 0 (no cone).
+double leave_cone(const glm::dvec3& o, const glm::dvec3& d, double k, double apex_y, double side) {
+    constexpr double kNever = std::numeric_limits<double>::infinity();
+    if (k <= 0.0) return kNever;
+    const double k2 = k * k;
+    const double a = d.x * d.x + d.z * d.z - k2 * d.y * d.y;
+    const double b = o.x * d.x + o.z * d.z - k2 * (o.y - apex_y) * d.y;
+    const double c = o.x * o.x + o.z * o.z - k2 * (o.y - apex_y) * (o.y - apex_y);
+    const double root = std::sqrt(std::max(b * b - a * c, 0.0));
+    double best = kNever;
+    for (double t : {(-b - root) / a, (-b + root) / a}) {
+        if (!(t > 0.0) || t >= best) continue;
+        const glm::dvec3 p = o + t * d;
+        const double outward = p.x * d.x + p.z * d.z - k2 * (p.y - apex_y) * d.y;
+        if (side * (p.y - apex_y) >= 0.0 && outward > 0.0) best = t;
+    }
+    return best;
+}
+
 }  // namespace
 
 std::optional<FoldedExit> FoldedExit::make(const Stone& stone) {
@@ -112,9 +164,7 @@ std::optional<FoldedExit> FoldedExit::make(const Stone& stone) {
             f.unfolded_facet_[bits * count + c] = facet;
         }
     }
-    f.centre_y_ = 0.5 * (bounds_min.y + bounds_max.y);
-    // The stone is mirrored by x = 0 and z = 0, so its box is centred on the axis.
-    f.semi_axes_ = glm::max(0.5 * (bounds_max - bounds_min), glm::dvec3(1e-9));
+    f.outline_ = turned_outline(stone.vertices, bounds_min, bounds_max);
     return f;
 }
 
@@ -147,14 +197,17 @@ glm::dvec3 FoldedExit::unfold(glm::dvec3 v, std::uint32_t bits) const {
 }
 
 glm::dvec3 FoldedExit::guess(const glm::dvec3& origin, const glm::dvec3& direction) const {
-    // The ellipsoid scaled to the unit sphere.
-    const glm::dvec3 q = (origin - glm::dvec3(0.0, centre_y_, 0.0)) / semi_axes_;
-    const glm::dvec3 e = direction / semi_axes_;
-    const double a = glm::dot(e, e);
-    const double b = glm::dot(q, e);
-    const double c = glm::dot(q, q) - 1.0;
-    const double s = (-b + std::sqrt(std::max(b * b - a * c, 0.0))) / a;
-    return origin + s * direction;
+    const TurnedOutline& s = outline_;
+    const glm::dvec3 o(origin.x, origin.y, origin.z * s.z_scale);
+    const glm::dvec3 d(direction.x, direction.y, direction.z * s.z_scale);
+    double t = std::min(leave_cone(o, d, s.pavilion_slope, s.y_min, 1.0),
+                        leave_cone(o, d, s.crown_slope, s.crown_apex, -1.0));
+    const double a = d.x * d.x + d.z * d.z;
+    const double b = o.x * d.x + o.z * d.z;
+    const double c = o.x * o.x + o.z * o.z - s.radius * s.radius;
+    if (a > 0.0) t = std::min(t, (-b + std::sqrt(std::max(b * b - a * c, 0.0))) / a);
+    if (d.y != 0.0) t = std::min(t, ((d.y > 0.0 ? s.y_max : s.y_min) - o.y) / d.y);
+    return origin + t * direction;
 }
 
 bool FoldedExit::next_exit(const glm::dvec3& origin, const glm::dvec3& direction, SurfaceHit& hit,

@@ -17,11 +17,12 @@
 // only touches a mirror line is matched there by its image from inside), so a ray's exit,
 // when it lies in that wedge, is found among those planes alone: 8 of the brilliant's 89.
 //
-// The search: fold the ray by the wedge of a first guess (where the ray leaves the ellipsoid
-// of the stone's bounding box), take the nearest forward plane among the wedge's facets, and
-// check that the point lies in the wedge. If it does, it is the exit: the point is inside every
-// plane of the facets that bound the stone in that wedge, so inside the stone, and on its
-// surface; a ray from inside meets the surface once. If not, fold by the point's own wedge and
+// The search: fold the ray by the wedge of a first guess (where the ray leaves the stone's
+// outline turned about its axis: a pavilion cone, a crown cone, the girdle's cylinder, the
+// table's plane; see TurnedOutline), take the nearest forward plane among the wedge's
+// facets, and check that the point lies in the wedge. If it does, it is the exit: the point is
+// inside every plane of the facets that bound the stone in that wedge, so inside the stone, and on
+// its surface; a ray from inside meets the surface once. If not, fold by the point's own wedge and
 // take the nearest plane over all wedges seen so far; a point in a wedge already seen is the
 // exit for the same reason. Each round sees a new wedge, so the search ends, at the latest
 // when it has seen every plane.
@@ -38,6 +39,21 @@
 #include "trace/intersector.hpp"
 
 namespace gem {
+
+// The first guess's solid: the stone turned about its axis, with z scaled by z_scale so that
+// an elongated stone's outline is about round. Points p with r = |(p.x, p.z z_scale)|:
+// r <= radius (the girdle), r <= pavilion_slope (y - y_min) (a cone from the culet through
+// the girdle's lower edge), r <= crown_slope (crown_apex - y) (a cone through the girdle's
+// upper edge and the table's), and y_min <= y <= y_max. A slope of 0 leaves its cone out.
+struct TurnedOutline {
+    double z_scale = 1.0;
+    double radius = 1.0;
+    double y_min = 0.0;
+    double y_max = 0.0;
+    double pavilion_slope = 0.0;
+    double crown_slope = 0.0;
+    double crown_apex = 0.0;
+};
 
 struct FoldCost {
     std::uint64_t searches = 0;
@@ -77,16 +93,15 @@ class FoldedExit {
     double inside() const { return inside_; }
     // The facets reaching inside the first wedge (indices into stone.facets).
     const std::vector<std::uint32_t>& candidates() const { return candidates_; }
-    // The first guess's ellipsoid, the stone's bounding box's: centre height and semi-axes.
-    double guess_centre_y() const { return centre_y_; }
-    const glm::dvec3& guess_semi_axes() const { return semi_axes_; }
+    // The first guess's solid.
+    const TurnedOutline& outline() const { return outline_; }
 
     // The fold of a point's wedge as bits (bit 0: x negated, bit 1: z negated, bit 2 + i:
     // reflected across mirror i), and a vector folded or unfolded by such bits.
     std::uint32_t fold_bits(glm::dvec2 xz) const;
     glm::dvec3 fold(glm::dvec3 v, std::uint32_t bits) const;
     glm::dvec3 unfold(glm::dvec3 v, std::uint32_t bits) const;
-    // Where the ray leaves the guess ellipsoid.
+    // Where the ray leaves the first guess's solid.
     glm::dvec3 guess(const glm::dvec3& origin, const glm::dvec3& direction) const;
 
   private:
@@ -99,8 +114,7 @@ class FoldedExit {
     std::vector<std::uint32_t> candidates_;
     // The facet that candidate c becomes when unfolded by bits: [bits * candidates + c].
     std::vector<std::uint32_t> unfolded_facet_;
-    double centre_y_ = 0.0;
-    glm::dvec3 semi_axes_{1.0};
+    TurnedOutline outline_;
 };
 
 }  // namespace gem

@@ -343,6 +343,36 @@ TEST(GpuTraceMethod, MeasuredSearchSaysWhatItChoseAndWhy) {
     EXPECT_EQ(forced.value().measurement(), "not measured");
 }
 
+TEST(GpuTraceMethod, EveryCutThatFoldsBuildsItsFoldedProgram) {
+    // Each cut's constants differ (wedges, planes, guess cones, whole-number values written
+    // as GLSL floats); the fold's twin (FoldedExit.*) says which cuts fold.
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    int folded = 0;
+    for (CutShape shape : {CutShape::round_brilliant, CutShape::princess, CutShape::emerald,
+                           CutShape::oval, CutShape::marquise, CutShape::cushion}) {
+        auto stone = make_cut(default_cut_params(shape), material_for(Case{}));
+        ASSERT_TRUE(stone.ok()) << stone.error();
+        auto method = gpu::TraceMethod::make(stone.value(), gpu::ExitSearch::folded);
+        ASSERT_TRUE(method.ok()) << to_string(shape) << ": " << method.error();
+        auto target = gpu::RenderTarget::make(32, 32);
+        ASSERT_TRUE(target.ok()) << target.error();
+        target.value().bind();
+        auto cube = gpu::EnvironmentCube::allocate(8);
+        ASSERT_TRUE(cube.ok()) << cube.error();
+        const double radius = bounding_radius(stone.value().vertices);
+        auto camera = Camera::make(three_quarter_view(), radius, 32, 32);
+        ASSERT_TRUE(camera.ok()) << camera.error();
+        gpu::StoneFrame frame{
+            &stone.value(), stone.value().material, camera.value(), {}, &cube.value(), 0.0,
+            2.0 * radius};
+        auto drawn = method.value().draw(frame, TraceSettings{});
+        EXPECT_TRUE(drawn.ok()) << to_string(shape) << ": " << drawn.error();
+        ++folded;
+    }
+    EXPECT_EQ(folded, 6);
+}
+
 TEST(GpuTraceMethod, FoldingAStoneWithOneMirrorIsRefused) {
     // The pear has one mirror (make_cut.cpp): nothing to fold by, so a forced fold fails with
     // one message and the measured choice leaves folding out.

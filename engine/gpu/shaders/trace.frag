@@ -91,8 +91,9 @@ int exit_by_constants(vec3 o, vec3 d, int from_facet, out float t_hit) {
 #ifdef EXIT_FOLDED
 // trace/folded_exit.hpp: FOLD_LEVELS mirrors after x = 0 and z = 0 (FOLD_MIRROR_LIST, unit
 // normals in x, z), the first wedge's edges (FOLD_EDGE_LO, FOLD_EDGE_HI) and how far inside
-// them a point is taken (FOLD_INSIDE, mm), the guess ellipsoid
-// (FOLD_GUESS_CENTRE_Y, FOLD_GUESS_INVERSE_AXES: 1 / semi-axes), and FOLDED_PLANES: one
+// them a point is taken (FOLD_INSIDE, mm), the first guess's solid (FOLD_GUESS_Z_SCALE,
+// FOLD_GUESS_RADIUS, FOLD_GUESS_Y: y_min, y_max; FOLD_GUESS_PAVILION and FOLD_GUESS_CROWN:
+// slope, apex y, where the cone is there), and FOLDED_PLANES: one
 // FOLDED_PLANE(n.x, n.y, n.z, d) per facet reaching inside the first wedge.
 #if FOLD_LEVELS > 0
 const vec2 kFoldMirror[FOLD_LEVELS] = vec2[](FOLD_MIRROR_LIST);
@@ -146,15 +147,47 @@ vec3 unfold_vector(vec3 v, uint bits) {
         n_round = better ? vec3(nx, ny, nz) : n_round;                  \
     }
 
+// folded_exit.cpp, leave_cone: one root of the ray against the cone r = k side (y - apex_y),
+// taken when it is ahead, before `best`, on the cone's own nappe and crossing it outward.
+float cone_root(vec3 o, vec3 d, float k2, float apex_y, float side, float t, float best) {
+    vec3 p = o + t * d;
+    float outward = p.x * d.x + p.z * d.z - k2 * (p.y - apex_y) * d.y;
+    return t > 0.0 && t < best && side * (p.y - apex_y) >= 0.0 && outward > 0.0 ? t : best;
+}
+
+float leave_cone(vec3 o, vec3 d, float k, float apex_y, float side) {
+    float k2 = k * k;
+    float a = d.x * d.x + d.z * d.z - k2 * d.y * d.y;
+    float b = o.x * d.x + o.z * d.z - k2 * (o.y - apex_y) * d.y;
+    float c = o.x * o.x + o.z * o.z - k2 * (o.y - apex_y) * (o.y - apex_y);
+    float root = sqrt(max(b * b - a * c, 0.0));
+    float best = cone_root(o, d, k2, apex_y, side, (-b - root) / a, 1e30);
+    return cone_root(o, d, k2, apex_y, side, (-b + root) / a, best);
+}
+
+// Where the ray leaves the stone turned about its axis (folded_exit.hpp: TurnedOutline); only
+// its azimuth is used.
+vec2 first_guess(vec3 o, vec3 d) {
+    vec3 so = vec3(o.xy, o.z * FOLD_GUESS_Z_SCALE);
+    vec3 sd = vec3(d.xy, d.z * FOLD_GUESS_Z_SCALE);
+    float t = 1e30;
+#ifdef FOLD_GUESS_PAVILION
+    t = min(t, leave_cone(so, sd, FOLD_GUESS_PAVILION.x, FOLD_GUESS_PAVILION.y, 1.0));
+#endif
+#ifdef FOLD_GUESS_CROWN
+    t = min(t, leave_cone(so, sd, FOLD_GUESS_CROWN.x, FOLD_GUESS_CROWN.y, -1.0));
+#endif
+    float a = dot(sd.xz, sd.xz);
+    float b = dot(so.xz, sd.xz);
+    float c = dot(so.xz, so.xz) - FOLD_GUESS_RADIUS * FOLD_GUESS_RADIUS;
+    t = min(t, a > 0.0 ? (-b + sqrt(max(b * b - a * c, 0.0))) / a : 1e30);
+    t = min(t, sd.y != 0.0 ? ((sd.y > 0.0 ? FOLD_GUESS_Y.y : FOLD_GUESS_Y.x) - so.y) / sd.y : 1e30);
+    return (o + t * d).xz;
+}
+
 // The exit of the ray from o along d inside the stone: t, and the exit facet's normal.
 float exit_by_folding(vec3 o, vec3 d, out vec3 n_exit) {
-    // The first guess: where the ray leaves the ellipsoid, scaled to the unit sphere.
-    vec3 q = (o - vec3(0.0, FOLD_GUESS_CENTRE_Y, 0.0)) * FOLD_GUESS_INVERSE_AXES;
-    vec3 e = d * FOLD_GUESS_INVERSE_AXES;
-    float a = dot(e, e);
-    float b = dot(q, e);
-    float c = dot(q, q) - 1.0;
-    vec2 target = (o + ((-b + sqrt(max(b * b - a * c, 0.0))) / a) * d).xz;
+    vec2 target = first_guess(o, d);
     uint visited = 0u;
     float t_hit = 1e30;
     vec3 n_best = vec3(0.0);  // in the wedge of bits_best
