@@ -86,6 +86,9 @@ TEST(FoldedExit, AgreesWithTheFullSearchOnEveryCutWithTwoMirrors) {
         const double rounds = static_cast<double>(t.cost.rounds) / t.cost.searches;
         // A round ends on a new wedge, so no search takes more rounds than there are wedges.
         EXPECT_LE(t.cost.most_rounds, fold->wedges()) << s.name;
+        // The first guess (the turned outline) puts most exits in the first round: a check on
+        // its quality, deterministic (the rays are seeded), not on any timing.
+        EXPECT_LT(rounds, 1.1) << s.name;
         std::printf(
             "%-16s %3zu facets, %2d wedges, %2zu candidates: %d rays, %.2f rounds and %.1f "
             "planes per exit, at most %d rounds, %d ties\n",
