@@ -312,7 +312,9 @@ TEST(GpuTraceMethod, FacetWalkConstantPlanesAndFoldingAllMatchCpuTracer) {
     for (gpu::ExitSearch search :
          {gpu::ExitSearch::walk, gpu::ExitSearch::constants, gpu::ExitSearch::folded}) {
         Case c;
-        c.name = gpu::to_string(search);
+        c.name = search == gpu::ExitSearch::walk        ? "walk"
+                 : search == gpu::ExitSearch::constants ? "constants"
+                                                        : "folded";  // artifact names
         c.camera = three_quarter_view();
         c.trace = trace_settings(12);
         c.shading.lights = two_lights();
