@@ -1,7 +1,6 @@
 #include "trace/folded_exit.hpp"
 
 #include <algorithm>
-#include <cassert>
 #include <cmath>
 #include <limits>
 #include <numbers>

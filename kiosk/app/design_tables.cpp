@@ -156,20 +156,20 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
                      " ms, budget " + fixed(budget_ms, 1) + " ms): no tables");
             return;
         }
+        const std::string over_budget = who + ": the trace draws it in p90 " + fixed(*p90, 1) +
+                                        " ms, over the " + fixed(budget_ms, 1) + " ms budget: ";
         const std::string& key = key_of(stone);
         std::error_code ec;
         if (fs::exists(file_of(key, ".gemdb"), ec)) {
             // Built by an earlier run that stopped before timing them.
             e.state = State::checking;
-            log_notice(who + ": the trace draws it in p90 " + fixed(*p90, 1) + " ms, over the " +
-                       fixed(budget_ms, 1) + " ms budget: checking the tables built before, " +
+            log_notice(over_budget + "checking the tables built before, " +
                        file_of(key, ".gemdb").string());
             return;
         }
         e.state = State::waiting;
         queue_.push_back(key);
-        log_notice(who + ": the trace draws it in p90 " + fixed(*p90, 1) + " ms, over the " +
-                   fixed(budget_ms, 1) + " ms budget: building its tables in the background");
+        log_notice(over_budget + "building its tables in the background");
         return;
     }
     if (e.state == State::tables && e.fresh && from_tables) {

@@ -9,6 +9,7 @@
 #include <random>
 
 #include "optics/fresnel.hpp"
+#include "render/camera.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"
 
@@ -36,8 +37,7 @@ inline void for_every_kind_of_exit_ray(
     const std::function<void(const glm::dvec3&, const glm::dvec3&, std::uint32_t)>& check) {
     const auto full = make_convex_intersector(s);
     std::mt19937_64 rng(7);
-    double radius = 0.0;
-    for (const glm::dvec3& v : s.vertices) radius = std::max(radius, glm::length(v));
+    const double radius = bounding_radius(s.vertices);
     for (int i = 0; i < pixel_rays; ++i) {
         const glm::dvec3 d = random_unit(rng);
         glm::dvec3 side = glm::normalize(glm::cross(d, random_unit(rng)));

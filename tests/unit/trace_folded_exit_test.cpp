@@ -12,6 +12,7 @@
 #include <numbers>
 
 #include "import/load_model.hpp"
+#include "render/camera.hpp"
 #include "trace/folded_exit.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"
@@ -27,16 +28,10 @@ struct Tally {
     FoldCost cost;
 };
 
-double stone_radius(const Stone& s) {
-    double r = 0.0;
-    for (const glm::dvec3& v : s.vertices) r = std::max(r, glm::length(v));
-    return r;
-}
-
 Tally fold_every_kind_of_ray(const Stone& s, const FoldedExit& fold) {
     const auto full = make_convex_intersector(s);
     // Folding reflects the ray by rounded sines and cosines: its t carries a few ulps more.
-    const double close = 1e-12 * stone_radius(s);
+    const double close = 1e-12 * bounding_radius(s.vertices);
     Tally tally;
     test::for_every_kind_of_exit_ray(
         s, 3000, 12, [&](const glm::dvec3& o, const glm::dvec3& d, std::uint32_t from) {

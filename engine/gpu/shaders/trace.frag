@@ -306,9 +306,8 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
         float t;
         vec3 n;
 #ifdef EXIT_FOLDED
-        t = exit_by_folding(o, d, n);
-        if (t >= 1e30) break;  // a closed solid always has an exit
-        int exit_facet = from;  // unused: folding needs no index (folded_exit.hpp)
+        t = exit_by_folding(o, d, n);  // needs no starting facet (folded_exit.hpp)
+        if (t >= 1e30) break;          // a closed solid always has an exit
 #else
 #ifdef EXIT_UNROLLED
         int exit_facet = exit_by_constants(o, d, from, t);
@@ -317,6 +316,7 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
 #endif
         if (exit_facet < 0) break;  // a closed solid always has one
         n = facet_plane(exit_facet).xyz;
+        from = exit_facet;
 #endif
         vec3 p = o + t * d;
         path += t;
@@ -340,7 +340,6 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
         d = reflect(d, n);
         if (kFirstOrder) dd -= 2.0 * dot(dd, n) * n;  // the derivative only where it is used
         weight *= split.x;
-        from = exit_facet;
     }
     return colour;
 }
