@@ -58,7 +58,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
             break;
         }
         case Method::phong: {
-            auto m = PhongMethod::make(s.stone);
+            auto m = PhongMethod::make(s.stone, s.shading.h);
             if (!m) return Error{m.error()};
             r.phong_ = std::make_unique<PhongMethod>(std::move(m).value());
             break;

@@ -67,7 +67,8 @@ std::uint32_t shading_features(const StoneFrame& frame) {
         (sigma.x > 0.0 || sigma.y > 0.0 || sigma.z > 0.0)) {
         features |= kAbsorbing;
     }
-    return features | light_count_feature(frame.shading.lights);
+    return features | light_count_feature(frame.shading.lights) |
+           specular_power_feature(frame.shading.h);
 }
 
 void set_light_uniforms(const Program& program, const std::vector<Light>& lights) {
@@ -83,7 +84,15 @@ void set_light_uniforms(const Program& program, const std::vector<Light>& lights
     glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
 }
 
-void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
+SamplerBinding::SamplerBinding(GLuint unit, GLuint sampler) : unit_(unit) {
+    glBindSampler(unit, sampler);
+}
+
+SamplerBinding::~SamplerBinding() {
+    glBindSampler(unit_, 0);
+}
+
+SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
     program.set("u_environment", unit);
@@ -96,6 +105,7 @@ void set_shading_uniforms(const Program& program, const StoneFrame& frame, int u
     program.set("u_alpha", static_cast<float>(s.alpha));
     program.set("u_stone_colour", glm::vec3(frame.material.body_colour));
     program.set("u_absorption", glm::vec3(frame.material.absorption_per_mm));
+    return SamplerBinding(static_cast<GLuint>(unit), frame.environment->sharp_sampler());
 }
 
 }  // namespace gem::gpu

@@ -32,14 +32,30 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
 glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 
 // The shading.glsl features `frame` needs compiled in (program_variants.hpp: the thesis'
-// shading model, a cube at infinity, the number of lights).
+// shading model, a cube at infinity, an absorbing body, the number of lights, a whole
+// specular exponent).
 std::uint32_t shading_features(const StoneFrame& frame);
 
 // u_light_position (w = 1: a point, 0: a direction) and u_light_colour of the first kMaxLights
 // lights; their count is compiled into the program (light_count_feature).
 void set_light_uniforms(const Program& program, const std::vector<Light>& lights);
 
-// Binds the environment cube to texture unit `unit`.
-void set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit);
+// A sampler bound to a texture unit for as long as this lives (it overrides the filter of
+// whatever texture a later pass binds to the unit).
+class SamplerBinding {
+  public:
+    SamplerBinding(GLuint unit, GLuint sampler);
+    SamplerBinding(const SamplerBinding&) = delete;
+    SamplerBinding& operator=(const SamplerBinding&) = delete;
+    ~SamplerBinding();
+
+  private:
+    GLuint unit_;
+};
+
+// Binds the environment cube to texture unit `unit`, with its sharp sampler for as long as
+// the binding returned lives: keep it until the stone's draws are made.
+[[nodiscard]] SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& frame,
+                                                  int unit);
 
 }  // namespace gem::gpu

@@ -57,6 +57,9 @@ inline void delete_program(GLuint n) {
 inline void delete_query(GLuint n) {
     glDeleteQueries(1, &n);
 }
+inline void delete_sampler(GLuint n) {
+    glDeleteSamplers(1, &n);
+}
 }  // namespace detail
 
 using Texture = GlHandle<detail::delete_texture>;
@@ -65,6 +68,7 @@ using Framebuffer = GlHandle<detail::delete_framebuffer>;
 using Renderbuffer = GlHandle<detail::delete_renderbuffer>;
 using VertexArray = GlHandle<detail::delete_vertex_array>;
 using ProgramHandle = GlHandle<detail::delete_program>;
+using Sampler = GlHandle<detail::delete_sampler>;
 
 inline Texture make_texture() {
     GLuint n = 0;

@@ -4,29 +4,38 @@
 
 namespace gem::gpu {
 
-PhongMethod::PhongMethod(StoneGeometry geometry, ProgramVariants programs)
-    : geometry_(std::move(geometry)), programs_(std::move(programs)) {}
+PhongMethod::PhongMethod(StoneGeometry geometry, ProgramVariants programs,
+                         std::uint32_t specular_power)
+    : geometry_(std::move(geometry)),
+      programs_(std::move(programs)),
+      specular_power_(specular_power) {}
 
-Result<PhongMethod> PhongMethod::make(const Stone& stone) {
+Result<PhongMethod> PhongMethod::make(const Stone& stone, double h) {
     auto geometry = StoneGeometry::upload(stone);
     if (!geometry) return Error{"phong: " + geometry.error()};
     ProgramVariants programs("phong", {});
-    auto built =
-        programs.build_every_light_count(0, [&](const Program& p) { geometry.value().attach(p); });
+    const std::uint32_t power = specular_power_feature(h);
+    auto built = programs.build_every_light_count(
+        power, [&](const Program& p) { geometry.value().attach(p); });
     if (!built) return Error{built.error()};
-    return PhongMethod(std::move(geometry).value(), std::move(programs));
+    return PhongMethod(std::move(geometry).value(), std::move(programs), power);
 }
 
 Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     const Camera& camera = frame.camera;
-    const Program& program = *programs_.find(light_count_feature(frame.shading.lights));
+    if (specular_power_feature(frame.shading.h) != specular_power_) {
+        return Error{"phong: drawn with a specular exponent of " + std::to_string(frame.shading.h) +
+                     ", its programs were built for another"};
+    }
+    const Program& program =
+        *programs_.find(light_count_feature(frame.shading.lights) | specular_power_);
     program.use();
     program.set("u_view_projection", view_projection(camera, frame.scene_radius_mm));
     const bool at_infinity = camera.orthographic();
     program.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
                                      : glm::vec3(-camera.forward() * camera.distance()));
     program.set("u_eye_at_infinity", at_infinity ? 1 : 0);
-    set_shading_uniforms(program, frame, 0);
+    const SamplerBinding sharp = set_shading_uniforms(program, frame, 0);
     geometry_.bind(program, 1);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);

@@ -15,7 +15,9 @@ namespace gem::gpu {
 
 class PhongMethod {
   public:
-    static Result<PhongMethod> make(const Stone& stone);
+    // Its programs are built now for every light count and the specular exponent h
+    // (frame.shading.h must keep it).
+    static Result<PhongMethod> make(const Stone& stone, double h);
 
     // Draws over the bound framebuffer with GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA blending:
     // Phong with the lights (k_s, h from frame.shading), ambient from frame.environment along
@@ -26,9 +28,10 @@ class PhongMethod {
     Result<bool> draw(const StoneFrame& frame) const;
 
   private:
-    PhongMethod(StoneGeometry geometry, ProgramVariants programs);
-    StoneGeometry geometry_;    // the stone pass's triangles; normals from its facet planes
-    ProgramVariants programs_;  // one per light count, all built by make()
+    PhongMethod(StoneGeometry geometry, ProgramVariants programs, std::uint32_t specular_power);
+    StoneGeometry geometry_;            // the stone pass's triangles; normals from its facet planes
+    ProgramVariants programs_;          // one per light count, all built by make()
+    std::uint32_t specular_power_ = 0;  // specular_power_feature of make()'s h
 };
 
 }  // namespace gem::gpu

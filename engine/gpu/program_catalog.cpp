@@ -14,28 +14,32 @@ std::vector<ProgramSpec> all_program_specs() {
         // the facets from stone.glsl; each differs in its fragment shader's last file.
         {"table",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"},
+         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
          {},
          kTableFeatures},
         {"table_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "shading.glsl", "table.frag"},
+         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
          {"NON_CONVEX"},
          kTableFeatures},
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
         {"trace",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"},
+         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {},
          kTraceFeatures},
         // Its shading only: a non-convex stone's fire is not traced per channel.
         {"trace_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "shading.glsl", "trace.frag"},
+         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"},
          kShadingFeatures},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
-        {"phong", {"stone.vert"}, {"stone.glsl", "phong.frag"}, {}, kLightCountBits},
+        {"phong",
+         {"stone.vert"},
+         {"stone.glsl", "specular.glsl", "phong.frag"},
+         {},
+         kLightCountBits | kSpecularPowerBits},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}, kLightCountBits},
         // The picture from HDR radiance to the display: glare pyramid, tone curve

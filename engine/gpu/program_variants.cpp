@@ -1,5 +1,7 @@
 #include "gpu/program_variants.hpp"
 
+#include <cmath>
+
 #include "gpu/program_catalog.hpp"
 
 namespace gem::gpu {
@@ -15,7 +17,15 @@ std::vector<std::string> feature_defines(std::uint32_t features) {
     if (const int lights = light_count_of(features); lights > 0) {
         defines.push_back("LIGHT_COUNT " + std::to_string(lights));
     }
+    if (const int power = specular_power_of(features); power > 0) {
+        defines.push_back("SPECULAR_POWER " + std::to_string(power));
+    }
     return defines;
+}
+
+std::uint32_t specular_power_feature(double h) {
+    const bool whole = h >= 1.0 && h <= kMaxSpecularPower && h == std::floor(h);
+    return whole ? static_cast<std::uint32_t>(h) << kSpecularPowerShift : 0u;
 }
 
 ProgramVariants::ProgramVariants(std::string name, std::vector<std::string> defines)

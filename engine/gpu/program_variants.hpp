@@ -42,10 +42,21 @@ inline std::uint32_t light_count_feature(const std::vector<Light>& lights) {
 constexpr int light_count_of(std::uint32_t features) {
     return static_cast<int>((features & kLightCountBits) >> kLightCountShift);
 }
+// Bits 9-18 hold a whole specular exponent h, 1 .. 1023 (SPECULAR_POWER h, specular.glsl);
+// 0: any other h, taken by pow at run time.
+inline constexpr std::uint32_t kSpecularPowerShift = 9;
+inline constexpr int kMaxSpecularPower = 1023;
+inline constexpr std::uint32_t kSpecularPowerBits = static_cast<std::uint32_t>(kMaxSpecularPower)
+                                                    << kSpecularPowerShift;
+std::uint32_t specular_power_feature(double h);
+constexpr int specular_power_of(std::uint32_t features) {
+    return static_cast<int>((features & kSpecularPowerBits) >> kSpecularPowerShift);
+}
 inline constexpr std::uint32_t kShadingFeatures =
-    kThesisShading | kCubeAtInfinity | kAbsorbing | kLightCountBits;
+    kThesisShading | kCubeAtInfinity | kAbsorbing | kLightCountBits | kSpecularPowerBits;
 
-// The #defines of `features`, in bit order, the light count last (none for no lights).
+// The #defines of `features`, in bit order, then the light count (none for no lights) and the
+// specular power (none for pow at run time).
 std::vector<std::string> feature_defines(std::uint32_t features);
 
 class ProgramVariants {

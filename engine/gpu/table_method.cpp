@@ -230,7 +230,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     const Program& p = *chosen.value();
     p.use();
     set_camera_uniforms(p, camera, frame.scene_radius_mm);
-    set_shading_uniforms(p, frame, 0);
+    const SamplerBinding sharp = set_shading_uniforms(p, frame, 0);
     stone_->bind(p, 1);
     p.set("u_field_mm", static_cast<float>(model.field_mm));
     p.set("u_image_scale", static_cast<float>(image_scale));

@@ -234,7 +234,7 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     const Program& p = *chosen.value();
     p.use();
     set_camera_uniforms(p, frame.camera, frame.scene_radius_mm);
-    set_shading_uniforms(p, frame, kEnvironmentUnit);
+    const SamplerBinding sharp = set_shading_uniforms(p, frame, kEnvironmentUnit);
     geometry_.bind(p, kStoneUnit);
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));

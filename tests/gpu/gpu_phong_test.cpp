@@ -20,8 +20,18 @@ struct Drawn {
     Camera camera;
 };
 
+// A light up and to the side, h = 40, opacity 1 − alpha.
+ShadingSettings shading_with(double alpha) {
+    ShadingSettings shading;
+    shading.alpha = alpha;
+    shading.h = 40.0;
+    shading.lights.push_back({{20.0, 60.0, 40.0}, false, {1.0, 1.0, 1.0}});
+    return shading;
+}
+
 // Draws `stone` over a cleared transparent black target: alpha > 0 marks the stone.
-Drawn draw_phong(const Stone& stone, const CameraSettings& settings, int size, double alpha) {
+Drawn draw_phong(const Stone& stone, const CameraSettings& settings, int size,
+                 const ShadingSettings& shading) {
     auto camera = Camera::make(settings, bounding_radius(stone.vertices), size, size);
     EXPECT_TRUE(camera.ok()) << camera.error();
     auto environment =
@@ -29,16 +39,14 @@ Drawn draw_phong(const Stone& stone, const CameraSettings& settings, int size, d
     EXPECT_TRUE(environment.ok()) << environment.error();
     auto target = gpu::RenderTarget::make(size, size);
     EXPECT_TRUE(target.ok()) << target.error();
-    auto method = gpu::PhongMethod::make(stone);
+    auto method = gpu::PhongMethod::make(stone, shading.h);
     EXPECT_TRUE(method.ok()) << method.error();
     gpu::StoneFrame frame;
     frame.stone = &stone;
     frame.material = stone.material;
     frame.material.body_colour = {0.9, 0.3, 0.2};
     frame.camera = camera.value();
-    frame.shading.alpha = alpha;
-    frame.shading.h = 40.0;
-    frame.shading.lights.push_back({{20.0, 60.0, 40.0}, false, {1.0, 1.0, 1.0}});
+    frame.shading = shading;
     frame.environment = &environment.value();
     frame.scene_radius_mm = bounding_radius(stone.vertices);
     target.value().bind();
@@ -60,7 +68,7 @@ TEST(GpuPhong, CoverageMatchesTheTracersHitMask) {
         settings.azimuth_deg = 20.0;
         settings.elevation_deg = 40.0;
         const int n = 64;
-        const Drawn drawn = draw_phong(stone.value(), settings, n, 0.4);
+        const Drawn drawn = draw_phong(stone.value(), settings, n, shading_with(0.4));
         const auto path =
             gpu_test::write_artifact(drawn.image, std::string("phong_") + to_string(shape));
         const Tracer tracer(stone.value());
@@ -108,7 +116,7 @@ TEST(GpuPhong, OpacityIsOneMinusTransparency) {
     ASSERT_TRUE(stone.ok()) << stone.error();
     CameraSettings top;  // straight down: the centre pixel sees the table over the pavilion
     const double alpha = 0.4;
-    const Drawn drawn = draw_phong(stone.value(), top, 32, alpha);
+    const Drawn drawn = draw_phong(stone.value(), top, 32, shading_with(alpha));
     // Two layers (a back facet, then the table) over alpha 0, each blended with
     // GL_SRC_ALPHA / GL_ONE_MINUS_SRC_ALPHA on alpha too: a' = o·o + (1 − o)·a, o = 1 − α.
     // The target stores alpha in 8 bits.
@@ -116,6 +124,35 @@ TEST(GpuPhong, OpacityIsOneMinusTransparency) {
     const double one_layer = o * o;
     EXPECT_NEAR(drawn.image.at(16, 16).w, o * o + (1.0 - o) * one_layer, 1.5 / 255.0);
     EXPECT_EQ(drawn.image.at(0, 0).w, 0.0f);  // a corner the stone does not reach
+}
+
+// The specular falloff (r·v)^h, compiled in as repeated squaring for a whole h and taken by
+// pow for any other (specular.glsl), against the Phong formula by hand at the table's centre.
+TEST(GpuPhong, SpecularFalloffFollowsTheExponentWholeOrNot) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto stone =
+        make_cut(default_cut_params(CutShape::round_brilliant), find_material("diamond").value());
+    ASSERT_TRUE(stone.ok()) << stone.error();
+    CameraSettings top;  // straight down: the centre pixel sees the table, n = v = +y
+    // A light from a direction l with l.y = 0.98: n.l = 0.98, and r = reflect(−l, n) has
+    // r.v = 2 (n.l)(n.v) − l.v = l.y. Opaque (alpha 0): the front facet alone.
+    const double l_y = 0.98;
+    for (double h : {40.0, 41.5}) {
+        ShadingSettings shading;
+        shading.alpha = 0.0;
+        shading.h = h;
+        shading.lights.push_back({{std::sqrt(1.0 - l_y * l_y), l_y, 0.0}, true, {1.0, 1.0, 1.0}});
+        const Drawn drawn = draw_phong(stone.value(), top, 32, shading);
+        // I_o (k_a E + k_d n.l) + k_s (r.v)^h: phong.frag's k_a 0.3, k_d 0.7, the test's
+        // environment 0.5 and I_o (0.9, 0.3, 0.2), k_s 1. Green and blue stay below 1, near
+        // 0.6-0.7, where a step of the target's sRGB bytes is 0.007 in linear light: rounding
+        // is within 0.004. h = 39 or 42 would be 0.009 and more away.
+        const double specular = std::pow(l_y, h);
+        const glm::vec4 pixel = drawn.image.at(16, 16);
+        EXPECT_NEAR(pixel.y, 0.3 * (0.3 * 0.5 + 0.7 * l_y) + specular, 0.005) << h;
+        EXPECT_NEAR(pixel.z, 0.2 * (0.3 * 0.5 + 0.7 * l_y) + specular, 0.005) << h;
+    }
 }
 
 }  // namespace

@@ -21,17 +21,25 @@ TEST(GpuPrograms, ContextIsOpenGlEs3) {
 }
 
 // Every combination of the features a spec's sources test (program_variants.hpp), as
-// ProgramVariants would build it.
+// ProgramVariants would build it; of the specular powers, pow at run time and one whole
+// exponent, with lights only (without, no lobe is computed).
 std::vector<gpu::ProgramSpec> every_variant(const gpu::ProgramSpec& spec) {
+    constexpr std::uint32_t kWholePower = 60u << gpu::kSpecularPowerShift;
+    const std::uint32_t switches = spec.features & ~gpu::kSpecularPowerBits;
     std::vector<gpu::ProgramSpec> variants;
-    for (std::uint32_t features = 0; features <= spec.features; ++features) {
-        if ((features & ~spec.features) != 0) continue;
-        if (gpu::light_count_of(features) > kMaxLights) continue;
-        gpu::ProgramSpec variant = spec;
-        for (std::string& define : gpu::feature_defines(features)) {
-            variant.defines.push_back(std::move(define));
+    for (std::uint32_t base = 0; base <= switches; ++base) {
+        if ((base & ~switches) != 0) continue;
+        if (gpu::light_count_of(base) > kMaxLights) continue;
+        const bool powers =
+            (spec.features & gpu::kSpecularPowerBits) != 0 && gpu::light_count_of(base) > 0;
+        for (std::uint32_t features : {base, base | kWholePower}) {
+            if (features != base && !powers) continue;
+            gpu::ProgramSpec variant = spec;
+            for (std::string& define : gpu::feature_defines(features)) {
+                variant.defines.push_back(std::move(define));
+            }
+            variants.push_back(std::move(variant));
         }
-        variants.push_back(std::move(variant));
     }
     return variants;
 }
@@ -50,8 +58,10 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
         }
     }
     // table, table_non_convex and trace test five switches (32 each), trace_non_convex three,
-    // each with 0 .. 4 lights; the ring and phong, the light count only.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 32 + 8 + 1 + 1));
+    // each with 0 .. 4 lights; the ring and phong, the light count only. Every one of these
+    // but the ring's, with 1 .. 4 lights, once more with a whole specular power.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 32 + 8 + 1 + 1) +
+                         4 * (32 + 32 + 32 + 8 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }
@@ -65,6 +75,19 @@ TEST(GpuPrograms, FeatureDefinesFollowTheBits) {
     EXPECT_EQ(gpu::feature_defines(gpu::kTwoViews | gpu::light_count_feature(3)),
               (std::vector<std::string>{"TWO_VIEWS", "LIGHT_COUNT 3"}));
     EXPECT_EQ(gpu::light_count_of(gpu::kThesisShading | gpu::light_count_feature(4)), 4);
+    EXPECT_EQ(gpu::feature_defines(gpu::light_count_feature(2) | gpu::specular_power_feature(60)),
+              (std::vector<std::string>{"LIGHT_COUNT 2", "SPECULAR_POWER 60"}));
+}
+
+TEST(GpuPrograms, OnlyAWholeSpecularExponentIsCompiledIn) {
+    EXPECT_EQ(gpu::specular_power_of(gpu::specular_power_feature(60.0)), 60);
+    EXPECT_EQ(gpu::specular_power_of(gpu::specular_power_feature(1.0)), 1);
+    EXPECT_EQ(gpu::specular_power_of(gpu::specular_power_feature(1023.0)), 1023);
+    EXPECT_EQ(gpu::specular_power_feature(60.5), 0u);  // pow at run time
+    EXPECT_EQ(gpu::specular_power_feature(0.5), 0u);
+    EXPECT_EQ(gpu::specular_power_feature(0.0), 0u);
+    EXPECT_EQ(gpu::specular_power_feature(1024.0), 0u);  // more than the bits hold
+    EXPECT_EQ(gpu::specular_power_feature(2000.0), 0u);
 }
 
 TEST(GpuPrograms, StoneBlockHasTheLayoutTheUploadWrites) {

@@ -20,7 +20,6 @@ uniform int u_eye_at_infinity;  // 1: orthographic camera
 uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
 uniform vec3 u_light_colour[MAX_LIGHTS];
 uniform float u_k_s;
-uniform float u_h;
 uniform float u_alpha;
 uniform vec3 u_stone_colour;
 
@@ -42,7 +41,7 @@ void main() {
         if (n_l <= 0.0) continue;
         diffuse += u_light_colour[i] * n_l;
         float r_v = max(dot(reflect(-l, n), v), 0.0);
-        specular += u_light_colour[i] * (u_k_s * pow(r_v, u_h));
+        specular += u_light_colour[i] * (u_k_s * specular_power(r_v));
     }
     vec3 ambient = textureLod(u_environment, n, 0.0).rgb;
     vec3 colour = u_stone_colour * (kAmbient * ambient + kDiffuse * diffuse) + specular;

@@ -1,6 +1,6 @@
 // Shading shared by the table and trace methods (DESIGN.md, "The method", eq. 6.2-6.5), the
 // GPU twin of engine/render/shading.cpp: everything here works in the stone frame (mm).
-// Follows stone.glsl (the facet planes).
+// Follows stone.glsl (the facet planes) and specular.glsl.
 //  physical: w_r (E(r) + k_s L(r)) + sum_n w_n exp(-sigma path_n) (E(t_n) + k_st L(t_n))
 //  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))
 // E is the environment through the virtual cube, L the lights' specular lobes with the
@@ -21,7 +21,6 @@ uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: d
 uniform vec3 u_light_colour[MAX_LIGHTS];
 uniform float u_k_s;
 uniform float u_k_st;
-uniform float u_h;
 uniform float u_alpha;
 uniform vec3 u_stone_colour;  // I_o
 uniform vec3 u_absorption;    // Beer-Lambert sigma per channel, 1/mm
@@ -98,12 +97,12 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
 #ifdef NON_CONVEX
         if (c <= 0.0) continue;
         if (light_blocked(p, n, to_light, lp.w > 0.5 ? 1.0 / inverse_length : 1e30)) continue;
-        sum += u_light_colour[i] * pow(c, u_h);
+        sum += u_light_colour[i] * specular_power(c);
 #else
         // The obstruction test on a convex stone: only the leaving facet can block a light,
         // by facing away from it (a select, not a branch).
         float unblocked = dot(n, to_light) > 0.0 ? 1.0 : 0.0;
-        sum += u_light_colour[i] * (unblocked * pow(c, u_h));
+        sum += u_light_colour[i] * (unblocked * specular_power(c));
 #endif
     }
     return k * sum;

@@ -23,6 +23,7 @@ uniform int u_thesis_weights;  // 1: constant R/T factors; 0: exact Fresnel
 uniform float u_r_factor;
 uniform float u_t_factor;
 uniform vec3 u_ior_channel;  // n at the channels' dominant wavelengths
+const float kAir = 1.0;
 // Fire (compiled in, program_variants.hpp): none by default; FIRE_FIRST_ORDER moves exit
 // directions by d(direction)/dn (n(channel) - n) as the table method does; FIRE_EXACT traces
 // every channel at its own index.
@@ -32,18 +33,34 @@ const bool kFirstOrder = true;
 const bool kFirstOrder = false;
 #endif
 
-// Weight shares of an interaction at incidence cosine cos_i from index n1 into n2
-// (optics/fresnel.cpp; tracer.cpp split_weight). x: reflected, y: transmitted.
+// Weight shares of an interaction from index n1 into n2 at incidence cosine cos_i and
+// transmission cosine cos_t (optics/fresnel.cpp; tracer.cpp split_weight). x: reflected,
+// y: transmitted. `total`: total internal reflection, which reflects everything.
+vec2 fresnel_split(float cos_i, float cos_t, float n1, float n2, bool total) {
+    float s = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
+    float p = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
+    // Selects, not early returns: under TIR the quotients may be 0/0.
+    float r = total ? 1.0 : min(0.5 * (s * s + p * p), 1.0);
+    bool factors = u_thesis_weights == 1 && r < 1.0;
+    return factors ? vec2(u_r_factor, u_t_factor) : vec2(r, 1.0 - r);
+}
+
 vec2 split_weight(float cos_i, float n1, float n2) {
     cos_i = clamp(cos_i, 0.0, 1.0);
     float sin_t2 = (n1 / n2) * (n1 / n2) * (1.0 - cos_i * cos_i);
+    return fresnel_split(cos_i, sqrt(max(1.0 - sin_t2, 0.0)), n1, n2, sin_t2 >= 1.0);
+}
+
+// A ray along d meeting the stone's surface from inside, at a facet with outward normal n:
+// the weight shares as split_weight gives them and the direction it leaves along (Snell;
+// unused under TIR, where the transmitted share is 0). Fresnel and Snell share cos_t, and
+// the direction needs no normalising: from unit d and n it is a unit vector.
+vec2 leave_stone(vec3 d, vec3 n, float ior, out vec3 out_dir) {
+    float cos_i = clamp(dot(d, n), 0.0, 1.0);
+    float sin_t2 = ior * ior * (1.0 - cos_i * cos_i);
     float cos_t = sqrt(max(1.0 - sin_t2, 0.0));
-    float s = (n1 * cos_i - n2 * cos_t) / (n1 * cos_i + n2 * cos_t);
-    float p = (n2 * cos_i - n1 * cos_t) / (n2 * cos_i + n1 * cos_t);
-    // Selects, not early returns: TIR (where the quotients may be 0/0) reflects everything.
-    float r = sin_t2 >= 1.0 ? 1.0 : min(0.5 * (s * s + p * p), 1.0);
-    bool factors = u_thesis_weights == 1 && r < 1.0;
-    return factors ? vec2(u_r_factor, u_t_factor) : vec2(r, 1.0 - r);
+    out_dir = ior * d + (cos_t - ior * cos_i) * n;
+    return fresnel_split(cos_i, cos_t, ior, kAir, sin_t2 >= 1.0);
 }
 
 // Snell refraction of d through the surface with normal n facing against d; false on TIR.
@@ -56,8 +73,6 @@ bool refract_ray(vec3 d, vec3 n, float n1, float n2, out vec3 refracted) {
     refracted = normalize(eta * d + (eta * cos_i - sqrt(1.0 - sin2_t)) * n);
     return true;
 }
-
-const float kAir = 1.0;
 
 #ifndef NON_CONVEX
 
@@ -104,28 +119,25 @@ vec2 reflect_across(vec2 p, vec2 m, bool across) {
     return across ? p - 2.0 * dot(p, m) * m : p;
 }
 
-// The fold that takes point p into the first wedge, as bits (folded_exit.cpp: fold_bits).
-uint fold_bits(vec2 p) {
-    uint bits = (p.x < 0.0 ? 1u : 0u) | (p.y < 0.0 ? 2u : 0u);
+// Folds the ray (o, d) by the fold that takes point p into the first wedge, and returns that
+// fold as bits (folded_exit.cpp: fold_bits): the ray is folded as p is, a mirror at a time.
+uint fold_ray(vec2 p, inout vec3 o, inout vec3 d) {
+    bvec2 negative = lessThan(p, vec2(0.0));
+    uint bits = (negative.x ? 1u : 0u) | (negative.y ? 2u : 0u);
+    vec2 flip = vec2(negative.x ? -1.0 : 1.0, negative.y ? -1.0 : 1.0);
     p = abs(p);
+    o.xz *= flip;
+    d.xz *= flip;
 #if FOLD_LEVELS > 0
     for (int i = 0; i < FOLD_LEVELS; ++i) {
         bool beyond = dot(p, kFoldMirror[i]) > 0.0;
         p = reflect_across(p, kFoldMirror[i], beyond);
+        o.xz = reflect_across(o.xz, kFoldMirror[i], beyond);
+        d.xz = reflect_across(d.xz, kFoldMirror[i], beyond);
         bits |= beyond ? (4u << uint(i)) : 0u;
     }
 #endif
     return bits;
-}
-
-vec3 fold_vector(vec3 v, uint bits) {
-    vec2 p = vec2((bits & 1u) != 0u ? -v.x : v.x, (bits & 2u) != 0u ? -v.z : v.z);
-#if FOLD_LEVELS > 0
-    for (int i = 0; i < FOLD_LEVELS; ++i) {
-        p = reflect_across(p, kFoldMirror[i], (bits & (4u << uint(i))) != 0u);
-    }
-#endif
-    return vec3(p.x, v.y, p.y);
 }
 
 vec3 unfold_vector(vec3 v, uint bits) {
@@ -193,11 +205,11 @@ float exit_by_folding(vec3 o, vec3 d, out vec3 n_exit) {
     vec3 n_best = vec3(0.0);  // in the wedge of bits_best
     uint bits_best = 0u;
     for (int seen = 0; seen < FOLD_WEDGES; ++seen) {  // a round per wedge at most
-        uint bits = fold_bits(target);
+        vec3 of = o;
+        vec3 df = d;
+        uint bits = fold_ray(target, of, df);
         if (((visited >> bits) & 1u) != 0u) break;  // its wedge was seen: the point is the exit
         visited |= 1u << bits;
-        vec3 of = fold_vector(o, bits);
-        vec3 df = fold_vector(d, bits);
         float t_round = t_hit;
         vec3 n_round = vec3(0.0);
         FOLDED_PLANES
@@ -320,11 +332,10 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
 #endif
         vec3 p = o + t * d;
         path += t;
-        vec2 split = split_weight(dot(d, n), ior, kAir);
         vec3 out_dir;
+        vec2 split = leave_stone(d, n, ior, out_dir);
         float out_weight = weight * split.y;
-        if (split.y > 0.0 && refract_ray(d, -n, ior, kAir, out_dir) &&
-            out_weight >= u_min_weight) {
+        if (split.y > 0.0 && out_weight >= u_min_weight) {
             vec3 env;
             if (kFirstOrder) {
                 vec3 dd_out = refraction_derivative(d, dd, -n, ior, 1.0);
