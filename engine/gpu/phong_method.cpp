@@ -1,5 +1,7 @@
 #include "gpu/phong_method.hpp"
 
+#include <cstdio>
+
 #include "gpu/gl_check.hpp"
 
 namespace gem::gpu {
@@ -24,7 +26,9 @@ Result<PhongMethod> PhongMethod::make(const Stone& stone, double h) {
 Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     const Camera& camera = frame.camera;
     if (specular_power_feature(frame.shading.h) != specular_power_) {
-        return Error{"phong: drawn with a specular exponent of " + std::to_string(frame.shading.h) +
+        char h[32];
+        std::snprintf(h, sizeof h, "%g", frame.shading.h);
+        return Error{std::string("phong: drawn with a specular exponent of ") + h +
                      ", its programs were built for another"};
     }
     const Program& program =

@@ -155,5 +155,31 @@ TEST(GpuPhong, SpecularFalloffFollowsTheExponentWholeOrNot) {
     }
 }
 
+// Its programs have the exponent compiled in: a draw with another says so and draws nothing.
+TEST(GpuPhong, ADrawWithAnotherExponentThanItWasBuiltForIsRefused) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto stone =
+        make_cut(default_cut_params(CutShape::round_brilliant), find_material("diamond").value());
+    ASSERT_TRUE(stone.ok()) << stone.error();
+    auto method = gpu::PhongMethod::make(stone.value(), 40.0);
+    ASSERT_TRUE(method.ok()) << method.error();
+    auto environment =
+        gpu::EnvironmentCube::from_environment(Environment::uniform(glm::dvec3(0.5)), 8);
+    ASSERT_TRUE(environment.ok()) << environment.error();
+    auto camera = Camera::make(CameraSettings{}, bounding_radius(stone.value().vertices), 16, 16);
+    ASSERT_TRUE(camera.ok()) << camera.error();
+    gpu::StoneFrame frame;
+    frame.stone = &stone.value();
+    frame.material = stone.value().material;
+    frame.camera = camera.value();
+    frame.shading = shading_with(0.0);
+    frame.shading.h = 60.0;
+    frame.environment = &environment.value();
+    auto drawn = method.value().draw(frame);
+    ASSERT_FALSE(drawn.ok());
+    EXPECT_NE(drawn.error().find("specular exponent of 60,"), std::string::npos) << drawn.error();
+}
+
 }  // namespace
 }  // namespace gem

@@ -1,7 +1,8 @@
 // The thesis' baseline (fig. 8.17): a Phong-shaded stone, alpha-blended over what is behind
 // it, no refraction. I = I_o (k_a E(n) + k_d sum I_l max(n.l, 0)) + sum I_l k_s (r.v)^h with
 // E the environment cube along the normal (ambient), opacity 1 - alpha (alpha: the thesis'
-// transparency, the share of the background that shows through each facet).
+// transparency, the share of the background that shows through each facet). Follows
+// stone.glsl (the facet planes) and specular.glsl ((r.v)^h).
 
 #ifndef MAX_LIGHTS
 #define MAX_LIGHTS 4
