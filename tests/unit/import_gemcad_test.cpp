@@ -1,5 +1,5 @@
 // GemCad design import: a square step written by hand (volume by hand) and the real
-// Standard Round Brilliant from the GemCad user's guide (shared data, SRB.asc).
+// Standard Round Brilliant from the GemCad user's guide (tests/data/gemcad/SRB.asc).
 
 #include <gtest/gtest.h>
 
@@ -27,7 +27,7 @@ using import_test::write_artifact;
 constexpr double kDeg = std::numbers::pi / 180.0;
 
 std::filesystem::path srb() {
-    return std::filesystem::path(GEM_SHARED_DATA_DIR) / "gemcad" / "SRB.asc";
+    return std::filesystem::path(GEM_TEST_DATA_DIR) / "gemcad" / "SRB.asc";
 }
 
 int count_kind(const Stone& s, FacetKind kind) {

@@ -130,7 +130,7 @@ TEST(ImportLoadModel, DesignIsCentredOnTheMiddleOfItsGirdle) {
 }
 
 TEST(ImportLoadModel, StandardRoundBrilliantProportions) {
-    const auto path = std::filesystem::path(GEM_SHARED_DATA_DIR) / "gemcad" / "SRB.asc";
+    const auto path = std::filesystem::path(GEM_TEST_DATA_DIR) / "gemcad" / "SRB.asc";
     auto result = load_model(path, {.material = {}, .width_mm = 6.5});
     ASSERT_TRUE(result.ok()) << result.error();
     const Stone& s = result.value();

@@ -71,7 +71,7 @@ TEST(FacetWalk, AgreesWithTheFullSearchOnEveryConvexCut) {
 }
 
 TEST(FacetWalk, AgreesWithTheFullSearchOnAGemCadDesign) {
-    auto stone = load_model(std::filesystem::path(GEM_SHARED_DATA_DIR) / "gemcad" / "SRB.asc");
+    auto stone = load_model(std::filesystem::path(GEM_TEST_DATA_DIR) / "gemcad" / "SRB.asc");
     ASSERT_TRUE(stone.ok()) << stone.error();
     ASSERT_TRUE(stone.value().convex);
     const Tally t = walk_every_kind_of_ray(stone.value(), 4000, 12);

@@ -133,7 +133,7 @@ TEST(FoldedExit, FoldingAndUnfoldingAreInverse) {
 }
 
 TEST(FoldedExit, AGemCadDesignFoldsWhenItsPlanesAreMirrored) {
-    auto stone = load_model(std::filesystem::path(GEM_SHARED_DATA_DIR) / "gemcad" / "SRB.asc");
+    auto stone = load_model(std::filesystem::path(GEM_TEST_DATA_DIR) / "gemcad" / "SRB.asc");
     ASSERT_TRUE(stone.ok()) << stone.error();
     const auto fold = FoldedExit::make(stone.value());
     if (!fold) GTEST_SKIP() << "the design's planes are not mirrored by x = 0 and z = 0";

@@ -18,7 +18,7 @@ namespace fs = std::filesystem;
 using kiosk::kStartView;
 using kiosk::ViewState;
 
-const fs::path kSharedEvemu = fs::path(GEM_SHARED_DATA_DIR) / "evemu";
+const fs::path kSharedEvemu = fs::path(GEM_TEST_DATA_DIR) / "evemu";
 const fs::path kFixtures = fs::path(GEM_FIXTURES_DIR) / "kiosk";
 
 // The view after one-finger drag steps of `steps_px` picture pixels each (x right, y down)

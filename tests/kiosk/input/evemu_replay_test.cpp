@@ -1,4 +1,4 @@
-// EvemuReplay on the real recordings in ../shared/data/evemu and the SYN_DROPPED fixture. Every
+// EvemuReplay on the real recordings in tests/data/evemu and the SYN_DROPPED fixture. Every
 // expected value comes from a trivial scan of the recording's own "E:" lines (raw_recording.hpp)
 // or from the numbers written in the file. With the picture the size of the device's axis
 // maxima and no rotation, a picture pixel equals the raw axis value (touch_mapping.hpp: p W).
@@ -21,7 +21,7 @@
 namespace gem::kiosk {
 namespace {
 
-const std::string data_dir = std::string(GEM_SHARED_DATA_DIR) + "/evemu/";
+const std::string data_dir = std::string(GEM_TEST_DATA_DIR) + "/evemu/";
 const std::string atmel_drag = data_dir + "Atmel_maXTouch_Touchscreen.1-finger-drag-up-down.events";
 const std::string atmel_two =
     data_dir + "Atmel_maXTouch_Touchscreen.2-fingers-touch-release.events";
