@@ -1,5 +1,5 @@
-// gemkiosk: the fullscreen kiosk a shop runs (DESIGN.md, "Layout": kiosk/). With only a config
-// file it is the product; the other options serve CI, benchmarks and remote support.
+// gemkiosk: the fullscreen kiosk a shop runs (docs/design.md, "Layout": kiosk/). With only a
+// config file it is the product; the other options serve CI, benchmarks and remote support.
 #include <CLI/CLI.hpp>
 
 #include "app/kiosk_run.hpp"

@@ -1,11 +1,11 @@
 #pragma once
 // Face-up light return, leakage, ASET zones and fire of a stone, measured with the exact
 // tracer. The viewer looks down the table axis (-y; or tilted, see FaceUpSettings),
-// orthographically (DESIGN.md: a stone seen from a counter is almost orthographic); one ray
-// per pixel of a square grid that just covers the girdle is traced backwards from the eye
-// into the stone, and every ray that comes out (the first surface reflection and each exit
-// after internal bounces) carries its exact Fresnel weight to whatever it sees of the sky
-// model (sky.hpp).
+// orthographically (docs/design.md, "Contracts": a stone seen from a counter is almost
+// orthographic); one ray per pixel of a square grid that just covers the girdle is traced
+// backwards from the eye into the stone, and every ray that comes out (the first surface
+// reflection and each exit after internal bounces) carries its exact Fresnel weight to whatever
+// it sees of the sky model (sky.hpp).
 //
 // Definitions (per stone pixel, i.e. per ray that hits the stone; totals are means over them):
 //  - light return: Σ over the pixel's rays of weight × sky radiance along the ray (the lit

@@ -1,7 +1,7 @@
 #pragma once
-// Which facets touch which (DESIGN.md, "Exact exits by walking the facets"): per facet its edge
-// neighbours (the facets across its loop's edges, one per edge) and the facets that share only
-// a vertex with it. A convex facet is the intersection of its plane with its edge neighbours'
+// Which facets touch which (docs/design.md, "Exact exits"): per facet its edge neighbours
+// (the facets across its loop's edges, one per edge) and the facets that share only a vertex
+// with it. A convex facet is the intersection of its plane with its edge neighbours'
 // half-spaces, so testing a point against those planes says whether it lies on the facet; the
 // vertex neighbours settle ties where an exit lands on a corner.
 

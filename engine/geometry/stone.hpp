@@ -1,7 +1,7 @@
 #pragma once
 // A stone: a closed polyhedral solid with its facets, triangle mesh, material and symmetry.
-// Stone frame (DESIGN.md): y up through the table, culet toward -y, girdle in the xz plane,
-// centred on the girdle centre; lengths in millimetres.
+// Stone frame (docs/design.md, "Contracts"): y up through the table, culet toward -y, girdle
+// in the xz plane, centred on the girdle centre; lengths in millimetres.
 
 #include <array>
 #include <cstdint>

@@ -2,7 +2,7 @@
 // The one EGL setup every program shares: an OpenGL ES 3.0 context, current on the calling
 // thread. Headless programs and tests use Mesa's surfaceless platform (no display, no GPU
 // needed: llvmpipe renders), falling back to the default display with a 1×1 pbuffer; the
-// kiosk makes a window surface on a GBM device (DESIGN.md, "Layout": display).
+// kiosk makes a window surface on a GBM device (docs/design.md, "Layout": display).
 
 #include <string>
 

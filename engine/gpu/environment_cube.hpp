@@ -1,7 +1,7 @@
 #pragma once
-// The virtual cube (DESIGN.md, "The method"): six images of what surrounds the stone, seen
-// from its centre, as one GL cube map in linear RGB (RGBA16F, filtered). Made from an
-// Environment by sampling it at every texel, or rendered (the ring scene, see ring_scene.hpp).
+// The virtual cube (docs/design.md, "Stage 2: shading"): six images of what surrounds the
+// stone, seen from its centre, as one GL cube map in linear RGB (RGBA16F, filtered). Made from
+// an Environment by sampling it at every texel, or rendered (the ring scene, see ring_scene.hpp).
 // Face directions follow the GL cube-map convention (OpenGL ES 3.0 spec, table 3.21), in the
 // stone frame.
 

@@ -1,7 +1,7 @@
 #pragma once
 // One frame of the shading stage, whatever the method: background, stone layer (table,
 // trace or phong), ring, composited with alpha and depth into the bound framebuffer
-// (DESIGN.md, "Data flow"). gemrender and the kiosk both draw through it. With a ring, the
+// (docs/design.md, "Data flow"). gemrender and the kiosk both draw through it. With a ring, the
 // virtual cube shows the ring around the stone: its six faces are rendered from the stone's
 // centre when the scene around the stone changes (make() and set_lights()), not every frame.
 

@@ -1,5 +1,5 @@
 #pragma once
-// The `phong` method (DESIGN.md, "Methods side by side"; thesis fig. 8.17): the stone's
+// The `phong` method (docs/design.md, "Methods side by side"; thesis fig. 8.17): the stone's
 // facets rasterised (the stone pass's triangles) with flat normals and Phong lighting,
 // alpha-blended over the background, back facets first and then front facets, no refraction. The
 // baseline the table and trace methods are compared against.

@@ -3,7 +3,7 @@
 // masking, Schlick Fresnel from the metal's F0), lit by up to kMaxLights lights and by the
 // environment cube along the reflected direction; and renders the scene around the stone
 // (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
-// from the stone's centre (DESIGN.md, "The method", 3. Jewellery).
+// from the stone's centre (docs/design.md, "Jewellery").
 
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_handles.hpp"

@@ -1,11 +1,11 @@
 #pragma once
-// The stone on the GPU, shared by every stone method (DESIGN.md, "Only the stone's pixels are
-// shaded"): its triangles for the stone pass (stone.vert: position and facet per corner), so
-// the rasteriser hands each fragment its entry facet and exact entry point; its facet planes
-// and edge neighbours in a uniform block (stone.glsl), read by every shader without texture
-// fetches; for convex stones the trace method's first-guess map of exit facets by direction
-// (trace/facet_walk.hpp), and for non-convex ones the triangles as a texel array for tracing
-// and the obstruction test.
+// The stone on the GPU, shared by every stone method (docs/design.md, "Only the stone's
+// pixels are shaded"): its triangles for the stone pass (stone.vert: position and facet per
+// corner), so the rasteriser hands each fragment its entry facet and exact entry point; its
+// facet planes and edge neighbours in a uniform block (stone.glsl), read by every shader
+// without texture fetches; for convex stones the trace method's first-guess map of exit facets
+// by direction (trace/facet_walk.hpp), and for non-convex ones the triangles as a texel array
+// for tracing and the obstruction test.
 
 #include <cstdint>
 

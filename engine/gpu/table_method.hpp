@@ -1,5 +1,5 @@
 #pragma once
-// The thesis' method on the GPU (DESIGN.md, "The method", stage 2): the view cache streams
+// The thesis' method on the GPU (docs/design.md, "Stage 2: shading"): the view cache streams
 // ray-tables from a .gemdb, the stored views the camera needs are uploaded as textures, and
 // the stone pass shades them where the stone is (table.frag). Between stored directions it shows
 // either the nearest stored view or a blend of the two nearest (TableOptions::blend).

@@ -1,5 +1,5 @@
 #pragma once
-// The trace method (DESIGN.md, "Methods side by side"): exact tracing per fragment of the
+// The trace method (docs/design.md, "Methods side by side"): exact tracing per fragment of the
 // stone pass, with the exact tracer's rules (trace/tracer.hpp: depth, weight threshold,
 // Fresnel or thesis R/T weights), shaded with shading.glsl. No tables, so it is exact at every
 // view. Non-convex stones test their triangles. Convex stones find each exit one of three
@@ -23,7 +23,8 @@
 
 namespace gem::gpu {
 
-// How the trace method colours fire (DESIGN.md, "Where gemkiosk goes beyond the thesis").
+// How the trace method colours fire (docs/design.md, "Physical weights and shading-time
+// material").
 enum class TraceDispersion {
     none,         // one index, n(D)
     first_order,  // exit directions moved by their derivative with respect to n, per channel

@@ -1,5 +1,6 @@
-// load_model: picks the reader, then moves the stone into the stone frame (DESIGN.md: y up
-// through the table, girdle in the xz plane, centred on the girdle centre, millimetres).
+// load_model: picks the reader, then moves the stone into the stone frame (docs/design.md,
+// "Contracts": y up through the table, girdle in the xz plane, centred on the girdle centre,
+// millimetres).
 
 #include "import/load_model.hpp"
 

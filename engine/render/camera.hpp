@@ -1,8 +1,8 @@
 #pragma once
 // The camera orbits the stone's centre. Its view direction is given in the stone frame by
 // azimuth and elevation; roll turns the image about the view axis and zoom scales it.
-// Orthographic by default (DESIGN.md: a stone seen from a shop counter is almost orthographic),
-// or perspective from a fixed distance.
+// Orthographic by default (docs/design.md, "Contracts": a stone seen from a shop counter is
+// almost orthographic), or perspective from a fixed distance.
 
 #include <vector>
 

@@ -1,5 +1,5 @@
 #pragma once
-// The streaming view cache between the table reader and the GPU (DESIGN.md, "Streaming"):
+// The streaming view cache between the table reader and the GPU (docs/design.md, "Streaming"):
 // decoded views are kept within a memory bound (least recently used evicted first), decoded
 // on one worker thread from a priority queue, and prefetched along the camera's rotation.
 // acquire() never waits for the disk: it answers at once with the best view already resident

@@ -1,6 +1,6 @@
 #pragma once
-// The exit of a ray inside a convex stone, found by walking the facets (DESIGN.md, "Exact
-// exits by walking the facets"): the CPU twin of the trace method's shader (trace.frag).
+// The exit of a ray inside a convex stone, found by walking the facets (docs/design.md,
+// "Exact exits"): the CPU twin of the trace method's shader (trace.frag).
 //
 // A ray inside leaves through the forward-facing plane with the smallest t. Take a candidate
 // facet g, go to where the ray meets its plane, and test that point against g's edge

@@ -1,7 +1,7 @@
 #pragma once
 // The kiosk on a real screen: one connector of one DRM card, driven through GBM and EGL, with
 // atomic modesetting where the driver has it (legacy otherwise), page flips that never block
-// the loop, hotplug and VT switches handled as normal events (DESIGN.md, "Layout": display).
+// the loop, hotplug and VT switches handled as normal events (docs/design.md, "Layout": display).
 // Frame path: present() draws the picture turned into the GBM window surface, swaps, locks the
 // new front buffer, wraps it in a framebuffer and queues a flip; the flip event releases the
 // previous buffer and makes the display ready again.

@@ -1,5 +1,5 @@
 #pragma once
-// Turns the shopper's fingers into the view the renderer draws (DESIGN.md, data flow:
+// Turns the shopper's fingers into the view the renderer draws (docs/design.md, "Data flow":
 // touch -> gestures -> camera). Pure logic: no I/O and no clock; time comes from the events and
 // from advance(), both CLOCK_MONOTONIC seconds (kiosk/input/input_event.hpp).
 //  - one finger drags the ring round like a turntable (gestures/turntable.hpp), and a fling

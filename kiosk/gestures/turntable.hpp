@@ -2,10 +2,10 @@
 // One-finger drag turns the ring like a turntable: horizontal motion changes the azimuth (a turn
 // about the stone's vertical axis, +y through the table), vertical motion the elevation, and
 // the ring stays upright. Why not an arcball: jewellers hold a ring upright and turn it that
-// way; the table database covers a band of elevations (DESIGN.md, "Tables by view direction"),
-// which a turntable keeps to by clamping one number while an arcball would wander out of it;
-// and an arcball mixes roll into every drag, whereas here roll belongs to the two-finger twist
-// alone, so a shopper can always get back to an upright ring.
+// way; the table database covers a band of elevations (docs/design.md, "Tables by view
+// direction"), which a turntable keeps to by clamping one number while an arcball would wander
+// out of it; and an arcball mixes roll into every drag, whereas here roll belongs to the
+// two-finger twist alone, so a shopper can always get back to an upright ring.
 //
 // Directions, so that the finger pushes the surface it touches (engine/render/camera.cpp gives
 // the basis: towards the eye e = (cos el sin az, sin el, cos el cos az), right = (cos az, 0,

@@ -21,7 +21,7 @@ namespace gem::kiosk {
 
 inline constexpr const char* kDefaultConfigFile = "/etc/gemkiosk/gemkiosk.toml";
 
-// [render]: how the stone is shaded (DESIGN.md, "Methods side by side").
+// [render]: how the stone is shaded (docs/design.md, "Methods side by side").
 // automatic ("auto"): the most accurate of trace, table blend, table nearest, table one level
 // lower and phong that holds the frame rate, measured at start (app/method_probe.hpp).
 enum class RenderMethod { table, trace, phong, automatic };

@@ -27,8 +27,8 @@ struct BackgroundPreset {
 };
 
 struct PresetLight {
-    // A point light's position (mm, stone frame, DESIGN.md "Contracts"), or for a directional
-    // light the direction toward the light (any length but zero).
+    // A point light's position (mm, stone frame, docs/design.md, "Contracts"), or for a
+    // directional light the direction toward the light (any length but zero).
     glm::dvec3 position{0.0, 100.0, 0.0};
     bool directional = false;
     glm::dvec3 colour{1.0};  // linear RGB intensity

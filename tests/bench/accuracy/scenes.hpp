@@ -22,7 +22,8 @@ struct Scene {
     Stone stone;
     glm::dvec3 target{0.0, 1.0, 0.0};  // the view asked for, before snapping on/between views
     // The lowest elevation the scene's databases store (a little below the target's), so
-    // builds hold only the directions the scene can show (DESIGN.md, "Model no more ...").
+    // builds hold only the directions the scene can show (docs/design.md, "Model no more than
+    // a scene needs").
     double min_elevation_deg = 20.0;
     std::optional<gpu::RingMesh> ring;
     bool sweeps = false;  // the table settings are swept on this scene, not only the base point
