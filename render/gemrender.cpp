@@ -1,9 +1,10 @@
-// gemrender: renders a stone to a PNG, with the exact CPU tracer (--method reference, the
+// gemrender: renders a stone or a piece to a PNG, with the exact CPU tracer (--method reference, the
 // default; optionally also a linear PFM) or headless on the GPU through EGL (--method table,
 // trace or phong; gpu_render.hpp). Options override the scene file; with no arguments at all
 // it renders the built-in default scene to out/gemrender-default.png.
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -11,6 +12,7 @@
 #include <CLI/CLI.hpp>
 
 #include "gpu_render.hpp"
+#include "piece/piece_file.hpp"
 #include "render/image.hpp"
 #include "render/reference_render.hpp"
 #include "render/tone_map.hpp"
@@ -39,6 +41,7 @@ struct Options {
     std::string out;
     std::string linear;
     std::string method = "reference";
+    std::string piece;
     std::string tone = "neutral";
     double exposure_ev = 0.0;
     gem::GpuRenderOptions gpu;
@@ -153,6 +156,8 @@ int main(int argc, char** argv) {
     app.add_flag("--spectral", o.spectral, "trace wavelength samples (dispersion)");
     app.add_option("--out", o.out, "PNG to write (8-bit sRGB)");
     app.add_option("--linear", o.linear, "also write linear float colour as PFM (reference)");
+    app.add_option("--piece", o.piece, "a piece description (config/pieces/README.md) instead of a stone")
+        ->check(CLI::ExistingFile);
     app.add_option("--method", o.method, "reference (CPU, exact), table, trace or phong (GPU)")
         ->check(CLI::IsMember({"reference", "table", "trace", "phong"}));
     app.add_option("--db", o.gpu.database, "ray-table database for --method table")
@@ -200,20 +205,36 @@ int main(int argc, char** argv) {
     gem::Result<gem::Scene> final_scene = apply(app, o, std::move(scene));
     if (!final_scene) return fail(final_scene.error());
     const gem::Scene& s = final_scene.value();
+    std::optional<gem::Piece> piece;
+    if (!o.piece.empty()) {
+        gem::Result<gem::Piece> loaded = gem::load_piece(o.piece);
+        if (!loaded) return fail(loaded.error());
+        piece = std::move(loaded).value();
+        std::printf("gemrender: %s\n", gem::describe(*piece).c_str());
+        if (o.method != "reference") {
+            return fail("--piece: the GPU methods draw one stone; a piece is drawn by --method "
+                        "reference");
+        }
+    }
     if (o.method != "reference") {
         o.gpu.method = o.method;
         o.gpu.out = o.out;
         return gem::render_gpu(s, o.gpu);
     }
 
-    gem::Result<gem::Stone> stone = gem::build_stone(s);
-    if (!stone) return fail(stone.error());
     gem::Result<gem::Environment> environment = gem::build_environment(s);
     if (!environment) return fail(environment.error());
-
     gem::RenderStats stats;
-    gem::Result<gem::Image> image =
-        gem::render_reference(stone.value(), environment.value(), gem::render_settings(s), &stats);
+    gem::Result<gem::Image> image = gem::Error{""};
+    if (piece) {
+        image = gem::render_piece_reference(*piece, environment.value(), gem::render_settings(s),
+                                            &stats);
+    } else {
+        gem::Result<gem::Stone> stone = gem::build_stone(s);
+        if (!stone) return fail(stone.error());
+        image = gem::render_reference(stone.value(), environment.value(), gem::render_settings(s),
+                                      &stats);
+    }
     if (!image) return fail(image.error());
     if (auto written = gem::write_png(gem::to_display(image.value(), o.gpu.display), o.out);
         !written) {

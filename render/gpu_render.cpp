@@ -4,6 +4,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <optional>
 #include <numbers>
 #include <vector>
 
@@ -12,7 +13,9 @@
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_mesh.hpp"
+#include "piece/metal_obj.hpp"
 #include "optics/material.hpp"
+#include "piece/metal.hpp"
 #include "render/image.hpp"
 #include "scene/scene_build.hpp"
 
@@ -22,16 +25,6 @@ namespace {
 int fail(const std::string& message) {
     std::fprintf(stderr, "gemrender: %s\n", message.c_str());
     return 1;
-}
-
-Result<gpu::RingParams::Metal> parse_metal(const std::string& name) {
-    using M = gpu::RingParams::Metal;
-    if (name == "yellow_gold") return M::yellow_gold;
-    if (name == "white_gold") return M::white_gold;
-    if (name == "platinum") return M::platinum;
-    if (name == "silver") return M::silver;
-    return Error{"--metal: unknown metal '" + name +
-                 "' (yellow_gold, white_gold, platinum, silver)"};
 }
 
 double percentile(std::vector<double> v, double p) {
@@ -84,19 +77,21 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         setup.background_colour = glm::vec3(scene.environment.background_colour);
     }
 
-    gpu::RingMesh ring;
+    MetalMesh ring;
     if (!o.ring.empty()) {
-        auto metal = parse_metal(o.metal);
-        if (!metal) return fail(metal.error());
+        const std::optional<Metal> metal = parse_metal(o.metal);
+        if (!metal) {
+            return fail("--metal: unknown metal '" + o.metal + "' (" + kMetalNames + ")");
+        }
         const Stone& stone =
             setup.method == gpu::Method::table ? setup.database->stone() : setup.stone;
-        Result<gpu::RingMesh> made = Error{""};
+        Result<MetalMesh> made = Error{""};
         if (o.ring == "parametric") {
             gpu::RingParams params;
-            params.metal = metal.value();
+            params.metal = *metal;
             made = gpu::make_ring(params, stone);
         } else {
-            made = gpu::load_ring_obj(o.ring, metal.value(), gpu::RingParams{}.roughness);
+            made = load_metal_obj(o.ring, *metal, gpu::RingParams{}.roughness);
         }
         if (!made) return fail(made.error());
         ring = std::move(made).value();

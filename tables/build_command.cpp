@@ -10,7 +10,7 @@
 #include "commands.hpp"
 #include "process_limits.hpp"
 #include "progress.hpp"
-#include "stone_file.hpp"
+#include "scene/stone_file.hpp"
 #include "table_build.hpp"
 #include "tables/view_grid.hpp"
 #include "trace/parallel.hpp"

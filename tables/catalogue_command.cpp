@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "stone_file.hpp"
+#include "scene/stone_file.hpp"
 #include "util/atomic_file.hpp"
 
 namespace gem::tables {

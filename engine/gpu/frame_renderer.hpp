@@ -13,6 +13,7 @@
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/table_method.hpp"
 #include "gpu/trace_method.hpp"
+#include "piece/metal_mesh.hpp"
 #include "render/environment.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
@@ -21,7 +22,6 @@ namespace gem::gpu {
 
 class PhongMethod;
 class RingRenderer;
-struct RingMesh;
 
 enum class Method { table, trace, phong };
 const char* to_string(Method method);
@@ -40,7 +40,7 @@ struct FrameSetup {
     const Environment* environment = nullptr;
     int cube_face = 512;                         // virtual-cube face size, texels
     std::optional<glm::vec3> background_colour;  // else the environment shows behind
-    const RingMesh* ring = nullptr;              // optional jewellery around the stone
+    const MetalMesh* ring = nullptr;              // optional jewellery around the stone
 };
 
 // What render() waits for: nothing (a display's swap paces it), the whole frame (timing), or

@@ -57,7 +57,7 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm) {
 RingRenderer::RingRenderer(ProgramVariants ring, Program background)
     : ring_(std::move(ring)), background_(std::move(background)) {}
 
-Result<RingRenderer> RingRenderer::make(const RingMesh& mesh) {
+Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
     if (mesh.positions.size() != mesh.normals.size() || mesh.indices.size() % 3 != 0) {
         return Error{"ring renderer: the mesh has " + std::to_string(mesh.positions.size()) +
                      " positions, " + std::to_string(mesh.normals.size()) + " normals and " +

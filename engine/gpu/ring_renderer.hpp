@@ -26,7 +26,7 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm);
 class RingRenderer {
   public:
     // An empty mesh is allowed: a loose stone, where only the environment is drawn into cubes.
-    static Result<RingRenderer> make(const RingMesh& mesh);
+    static Result<RingRenderer> make(const MetalMesh& mesh);
 
     // Draws the ring into the bound framebuffer with depth test and depth write (the stone
     // layer has written its depth already), opaque. Uses view_projection(camera,

@@ -78,9 +78,9 @@ std::vector<float> delta_e_map(const Image& test, const Image& reference) {
 Result<ImageError> compare_images(const Image& test, const Image& reference,
                                   const ErrorOptions& options) {
     if (test.width != reference.width || test.height != reference.height)
-        return Error("compare_images: sizes differ (" + std::to_string(test.width) + "×" +
+        return Error{"compare_images: sizes differ (" + std::to_string(test.width) + "×" +
                      std::to_string(test.height) + " against " + std::to_string(reference.width) +
-                     "×" + std::to_string(reference.height) + ")");
+                     "×" + std::to_string(reference.height) + ")"};
     const std::vector<std::uint8_t> x = to_srgb8(test, 4);
     const std::vector<std::uint8_t> y = to_srgb8(reference, 4);
     const std::vector<float> map = delta_e_map(test, reference);
@@ -96,7 +96,7 @@ Result<ImageError> compare_images(const Image& test, const Image& reference,
         }
         compared.push_back(map[p]);
     }
-    if (compared.empty()) return Error("compare_images: no pixel to compare");
+    if (compared.empty()) return Error{"compare_images: no pixel to compare"};
 
     ImageError e;
     e.pixels = compared.size();

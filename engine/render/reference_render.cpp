@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "optics/spectrum.hpp"
+#include "render/piece_tracer.hpp"
 #include "trace/parallel.hpp"
 
 namespace gem {
@@ -40,42 +41,22 @@ glm::dvec2 sample_offset(int x, int y, int s, int n) {
 }
 
 struct Wavelength {
-    double ior;
+    std::vector<double> iors;  // one for each material traced
     glm::dvec3 weight;
 };
 
-}  // namespace
-
-Result<Image> render_reference(const Stone& stone, const Environment& environment,
-                               const RenderSettings& settings, RenderStats* stats) {
-    const auto start = std::chrono::steady_clock::now();
-    if (settings.samples_per_pixel < 1) return Error{"samples per pixel: must be at least 1"};
-    if (settings.shading.lights.size() > static_cast<std::size_t>(kMaxLights)) {
-        return Error{"lights: at most " + std::to_string(kMaxLights) + " are allowed"};
-    }
-    Result<Camera> camera_result = Camera::make(settings.camera, bounding_radius(stone.vertices),
-                                                settings.width, settings.height);
-    if (!camera_result) return Error{camera_result.error()};
-    const Camera& camera = camera_result.value();
-
-    std::vector<Wavelength> wavelengths;
-    if (settings.spectral) {
-        if (settings.spectral_samples < 1) return Error{"spectral samples: must be at least 1"};
-        for (const SpectralSample& s : spectral_samples(settings.spectral_samples)) {
-            wavelengths.push_back({stone.material.index(s.wavelength_nm), s.rgb_weight});
-        }
-    } else {
-        wavelengths.push_back({stone.material.index(), glm::dvec3(1.0)});
-    }
-
-    const Tracer tracer(stone);
-    const Shader shader(stone, stone.material, environment, settings.shading);
+// The pixel loop both references share: stratified samples per pixel, each traced at every
+// wavelength by `sample(ray, wavelength index, colour&)`, which says whether the ray met
+// what is drawn (coverage); a miss shows the background.
+template <class Scratch, class Sample>
+Image render_pixels(const Camera& camera, const Environment& environment,
+                    const RenderSettings& settings, const std::vector<Wavelength>& wavelengths,
+                    const Sample& sample, std::atomic<std::uint64_t>& rays) {
     Image image(settings.width, settings.height);
     const int spp = settings.samples_per_pixel;
-    std::atomic<std::uint64_t> rays{0};
     parallel_for(
         static_cast<std::size_t>(settings.height), [&](std::size_t begin, std::size_t end) {
-            RayList list;  // reused for every sample of these rows
+            Scratch scratch;  // reused for every sample of these rows
             std::uint64_t traced = 0;
             for (auto y = static_cast<int>(begin); y < static_cast<int>(end); ++y) {
                 for (int x = 0; x < settings.width; ++x) {
@@ -86,12 +67,14 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
                         const Ray ray = camera.ray(x + o.x, y + o.y);
                         glm::dvec3 colour(0.0);
                         bool hit = false;
-                        for (const Wavelength& w : wavelengths) {
-                            tracer.trace(ray, w.ior, settings.trace, list);
+                        for (std::size_t w = 0; w < wavelengths.size(); ++w) {
                             ++traced;
-                            if (!list.hit) break;  // the silhouette does not depend on n
+                            glm::dvec3 c(0.0);
+                            // A miss at one wavelength is a miss at all: the silhouette does
+                            // not depend on the index.
+                            if (!sample(ray, w, x, y, s, scratch, c)) break;
                             hit = true;
-                            colour += w.weight * shader.shade(list);
+                            colour += wavelengths[w].weight * c;
                         }
                         if (hit) {
                             ++hits;
@@ -108,11 +91,93 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
             }
             rays += traced;
         });
-    if (stats != nullptr) {
-        stats->pixel_rays = rays.load();
-        stats->seconds =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    return image;
+}
+
+// Checks the settings and lists the wavelengths to trace at: n(λ) per sample, or n(D) once.
+Result<std::vector<Wavelength>> wavelengths_for(const RenderSettings& settings,
+                                                const std::vector<const Material*>& materials) {
+    if (settings.samples_per_pixel < 1) return Error{"samples per pixel: must be at least 1"};
+    if (settings.shading.lights.size() > static_cast<std::size_t>(kMaxLights)) {
+        return Error{"lights: at most " + std::to_string(kMaxLights) + " are allowed"};
     }
+    std::vector<Wavelength> out;
+    if (settings.spectral) {
+        if (settings.spectral_samples < 1) return Error{"spectral samples: must be at least 1"};
+        for (const SpectralSample& s : spectral_samples(settings.spectral_samples)) {
+            Wavelength w{{}, s.rgb_weight};
+            for (const Material* m : materials) w.iors.push_back(m->index(s.wavelength_nm));
+            out.push_back(std::move(w));
+        }
+    } else {
+        Wavelength w{{}, glm::dvec3(1.0)};
+        for (const Material* m : materials) w.iors.push_back(m->index());
+        out.push_back(std::move(w));
+    }
+    return out;
+}
+
+void record(RenderStats* stats, std::uint64_t rays,
+            std::chrono::steady_clock::time_point start) {
+    if (stats == nullptr) return;
+    stats->pixel_rays = rays;
+    stats->seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+}  // namespace
+
+Result<Image> render_reference(const Stone& stone, const Environment& environment,
+                               const RenderSettings& settings, RenderStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
+    auto wavelengths = wavelengths_for(settings, {&stone.material});
+    if (!wavelengths) return Error{wavelengths.error()};
+    Result<Camera> camera = Camera::make(settings.camera, bounding_radius(stone.vertices),
+                                         settings.width, settings.height);
+    if (!camera) return Error{camera.error()};
+    const Tracer tracer(stone);
+    const Shader shader(stone, stone.material, environment, settings.shading);
+    std::atomic<std::uint64_t> rays{0};
+    const auto& ws = wavelengths.value();
+    Image image = render_pixels<RayList>(
+        camera.value(), environment, settings, ws,
+        [&](const Ray& ray, std::size_t w, int, int, int, RayList& list, glm::dvec3& colour) {
+            tracer.trace(ray, ws[w].iors[0], settings.trace, list);
+            if (!list.hit) return false;
+            colour = shader.shade(list);
+            return true;
+        },
+        rays);
+    record(stats, rays.load(), start);
+    return image;
+}
+
+Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
+                                     const RenderSettings& settings, RenderStats* stats) {
+    const auto start = std::chrono::steady_clock::now();
+    std::vector<const Material*> materials;
+    for (const Stone& kind : piece.kinds) materials.push_back(&kind.material);
+    auto wavelengths = wavelengths_for(settings, materials);
+    if (!wavelengths) return Error{wavelengths.error()};
+    Result<Camera> camera =
+        Camera::make(settings.camera, piece.radius_mm(), settings.width, settings.height);
+    if (!camera) return Error{camera.error()};
+    const PieceTracer tracer(piece, environment, settings.shading, settings.trace);
+    std::atomic<std::uint64_t> rays{0};
+    const auto& ws = wavelengths.value();
+    Image image = render_pixels<PieceTracer::Scratch>(
+        camera.value(), environment, settings, ws,
+        [&](const Ray& ray, std::size_t w, int x, int y, int s, PieceTracer::Scratch& scratch,
+            glm::dvec3& colour) {
+            // Rough metal is sampled: one stream a pixel sample, the same on every run.
+            scratch.random = (static_cast<std::uint64_t>(y) << 40) ^
+                             (static_cast<std::uint64_t>(x) << 16) ^ static_cast<std::uint64_t>(s);
+            bool hit = false;
+            colour = tracer.radiance(ray, ws[w].iors, scratch, &hit);
+            return hit;
+        },
+        rays);
+    record(stats, rays.load(), start);
     return image;
 }
 

@@ -6,6 +6,7 @@
 #include <cstdint>
 
 #include "geometry/stone.hpp"
+#include "piece/piece.hpp"
 #include "render/camera.hpp"
 #include "render/environment.hpp"
 #include "render/image.hpp"
@@ -40,5 +41,11 @@ struct RenderStats {
 // stone (coverage). The material is stone.material. Errors: bad camera or image settings.
 Result<Image> render_reference(const Stone& stone, const Environment& environment,
                                const RenderSettings& settings, RenderStats* stats = nullptr);
+
+// The same for a whole piece (render/piece_tracer.hpp): every stone, the metal and what passes
+// between them; the camera orbits the piece's origin and frames its bounding sphere.
+Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
+                                     const RenderSettings& settings,
+                                     RenderStats* stats = nullptr);
 
 }  // namespace gem

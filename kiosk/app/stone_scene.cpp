@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "app/start_view.hpp"
+#include "piece/metal_obj.hpp"
 #include "scene/scene.hpp"
 #include "tables/reader.hpp"
 
@@ -32,10 +33,10 @@ Result<Environment> make_environment(const LookChoice& look) {
     return environment.with_intensity(look.environment_intensity);
 }
 
-Result<gpu::RingMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
+Result<MetalMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
     if (stone.ring == RingKind::obj && stone.ring_mesh) return *stone.ring_mesh;
     if (stone.ring == RingKind::obj) {
-        return gpu::load_ring_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+        return load_metal_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
     }
     gpu::RingParams params;
     params.metal = stone.metal;

@@ -80,7 +80,7 @@ class StoneScene {
     std::shared_ptr<const Database> database_;
     std::shared_ptr<const Stone> designed_;
     Environment environment_ = Environment::studio();
-    gpu::RingMesh ring_;
+    MetalMesh ring_;
     std::optional<gpu::FrameRenderer> renderer_;
     double min_elevation_deg_ = -90.0;
     double max_elevation_deg_ = 90.0;

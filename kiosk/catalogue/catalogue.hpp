@@ -37,7 +37,7 @@ struct CatalogueOptions {
 enum class RingKind {
     parametric,  // made to fit the stone (gpu::make_ring)
     none,        // a loose stone
-    obj,         // a Wavefront OBJ in the stone frame (gpu::load_ring_obj)
+    obj,         // a Wavefront OBJ in the stone frame (piece/metal_obj.hpp)
 };
 
 struct CatalogueStone {
@@ -50,7 +50,7 @@ struct CatalogueStone {
     std::shared_ptr<const Stone> designed;  // the stone validation built from it
     RingKind ring = RingKind::parametric;
     std::filesystem::path ring_obj;                  // RingKind::obj: absolute path
-    std::shared_ptr<const gpu::RingMesh> ring_mesh;  // RingKind::obj: the mesh loaded
+    std::shared_ptr<const MetalMesh> ring_mesh;  // RingKind::obj: the mesh loaded
     gpu::RingParams::Metal metal = gpu::RingParams::Metal::yellow_gold;
     // Shading-time material overrides (the database records the defaults).
     std::optional<glm::dvec3> colour;

@@ -9,6 +9,8 @@
 
 #include <toml++/toml.h>
 
+#include "piece/metal.hpp"
+
 namespace gem::kiosk {
 
 namespace {
@@ -65,25 +67,16 @@ Problem read_rgb(const toml::node& node, std::string_view key, double max, glm::
     return std::nullopt;
 }
 
-// The metals gpu::RingParams knows (engine/gpu/ring_mesh.hpp). Rose gold is not among them,
-// so it is refused by name rather than drawn as something else.
-Problem read_metal(const toml::node& node, gpu::RingParams::Metal& out) {
-    using Metal = gpu::RingParams::Metal;
+// Rose gold is not among the metals, so it is refused by name rather than drawn as another.
+Problem read_metal(const toml::node& node, Metal& out) {
     std::string text;
     if (auto e = read_string(node, "stone.metal", text)) return e;
-    if (text == "yellow_gold") {
-        out = Metal::yellow_gold;
-    } else if (text == "white_gold") {
-        out = Metal::white_gold;
-    } else if (text == "platinum") {
-        out = Metal::platinum;
-    } else if (text == "silver") {
-        out = Metal::silver;
-    } else {
+    const std::optional<Metal> metal = parse_metal(text);
+    if (!metal) {
         return error_at(node, "stone.metal",
-                        "unknown metal '" + text +
-                            "' (this build has yellow_gold, white_gold, platinum, silver)");
+                        "unknown metal '" + text + "' (this build has " + kMetalNames + ")");
     }
+    out = *metal;
     return std::nullopt;
 }
 

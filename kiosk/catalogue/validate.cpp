@@ -4,7 +4,8 @@
 
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
-#include "stone_file.hpp"
+#include "piece/metal_obj.hpp"
+#include "scene/stone_file.hpp"
 
 namespace gem::kiosk {
 
@@ -44,7 +45,7 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
         if (!stone.design.empty()) {
             // A design that cannot be read leaves its stone out, not the catalogue.
-            Result<Stone> designed = tables::load_stone_file(stone.design);
+            Result<Stone> designed = load_stone_file(stone.design);
             if (!designed) {
                 catalogue.left_out.push_back(
                     "stone '" + stone.name +
@@ -58,10 +59,10 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
             stone.opened = std::move(opened).value();
         }
         if (stone.ring == RingKind::obj) {
-            Result<gpu::RingMesh> mesh =
-                gpu::load_ring_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+            Result<MetalMesh> mesh =
+                load_metal_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
             if (!mesh) return reject(relative_message(mesh.error(), stone.ring_obj, real));
-            stone.ring_mesh = std::make_shared<const gpu::RingMesh>(std::move(mesh).value());
+            stone.ring_mesh = std::make_shared<const MetalMesh>(std::move(mesh).value());
         }
         kept.push_back(std::move(stone));
     }

@@ -90,7 +90,7 @@ struct Case {
 };
 
 gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r,
-                       const gem::gpu::RingMesh& ring, const gem::Stone& stone, int frame) {
+                       const gem::MetalMesh& ring, const gem::Stone& stone, int frame) {
     if (v.ring) {
         const std::vector<glm::dvec3> points(ring.positions.begin(), ring.positions.end());
         const gem::kiosk::Framing framing =
@@ -136,7 +136,7 @@ struct Runner {
 gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::Stone& stone,
                                       const std::shared_ptr<const gem::Database>& db,
                                       const gem::Environment& environment,
-                                      const gem::gpu::RingMesh& ring) {
+                                      const gem::MetalMesh& ring) {
     gem::gpu::FrameSetup setup;
     setup.method = c.method;
     setup.database = c.method == Method::table ? db : nullptr;
@@ -184,7 +184,7 @@ double median(std::vector<double> samples) {
 // of its per-frame ratios to the phong frame drawn just before it.
 std::vector<Runner> run_view(const std::vector<Case>& cases, const View& v, const gem::Stone& stone,
                              const std::shared_ptr<const gem::Database>& db,
-                             const gem::Environment& environment, const gem::gpu::RingMesh& ring,
+                             const gem::Environment& environment, const gem::MetalMesh& ring,
                              int frames) {
     std::vector<Runner> runners;
     runners.reserve(cases.size());

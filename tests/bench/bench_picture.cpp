@@ -66,7 +66,7 @@ const std::vector<gem::Light> kLights = {{{-30.0, 80.0, 45.0}, false, {2.0, 2.0,
 
 gem::gpu::FrameRenderer make_renderer(Method method, const gem::Stone& stone,
                                       const gem::Environment& environment,
-                                      const gem::gpu::RingMesh* ring) {
+                                      const gem::MetalMesh* ring) {
     gem::gpu::FrameSetup setup;
     setup.method = method;
     setup.stone = stone;

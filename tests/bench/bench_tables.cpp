@@ -18,7 +18,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "stone_file.hpp"
+#include "scene/stone_file.hpp"
 #include "tables/reader.hpp"
 #include "tables/view_cache.hpp"
 #include "trace/parallel.hpp"
@@ -128,7 +128,7 @@ int main(int argc, char** argv) {
     build.stone_file = std::string(GEM_STONES_DIR) + "/tolkowsky-diamond.toml";
     build.out =
         keep.empty() ? (fs::temp_directory_path() / "bench_tables_diamond.gemdb").string() : keep;
-    auto stone = gem::tables::load_stone_file(build.stone_file);
+    auto stone = gem::load_stone_file(build.stone_file);
     if (!stone) {
         std::fprintf(stderr, "%s\n", stone.error().c_str());
         return 1;

@@ -56,7 +56,7 @@ Image render_case(const GoldenCase& c) {
         setup.trace.weights = WeightModel::thesis_factors;
         setup.material.body_colour = {0.1, 0.25, 0.8};  // a sapphire blue
     }
-    gpu::RingMesh ring;
+    MetalMesh ring;
     if (c.ring) {
         auto made = gpu::make_ring({}, setup.stone);
         EXPECT_TRUE(made.ok()) << made.error();

@@ -15,6 +15,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_renderer.hpp"
+#include "piece/metal_obj.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
 #include "trace/tracer.hpp"
@@ -31,7 +32,7 @@ Stone round_diamond() {
     return std::move(stone).value();
 }
 
-double volume(const gpu::RingMesh& m) {  // divergence theorem: positive when outward
+double volume(const MetalMesh& m) {  // divergence theorem: positive when outward
     double v = 0.0;
     for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
         const glm::dvec3 a(m.positions[m.indices[i]]), b(m.positions[m.indices[i + 1]]),
@@ -42,7 +43,7 @@ double volume(const gpu::RingMesh& m) {  // divergence theorem: positive when ou
 }
 
 // Every triangle's winding agrees with its corners' normals.
-int triangles_against_normals(const gpu::RingMesh& m) {
+int triangles_against_normals(const MetalMesh& m) {
     int bad = 0;
     for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
         const glm::vec3 a = m.positions[m.indices[i]], b = m.positions[m.indices[i + 1]],
@@ -62,7 +63,7 @@ struct Hit {
 
 // Nearest crossing of the ray with the mesh, with the interpolated normal there (Möller &
 // Trumbore 1997), independent of any GL.
-Hit ray_mesh(const gpu::RingMesh& m, const glm::dvec3& o, const glm::dvec3& d) {
+Hit ray_mesh(const MetalMesh& m, const glm::dvec3& o, const glm::dvec3& d) {
     Hit best;
     for (std::size_t i = 0; i + 2 < m.indices.size(); i += 3) {
         const glm::dvec3 a(m.positions[m.indices[i]]), b(m.positions[m.indices[i + 1]]),
@@ -143,11 +144,11 @@ glm::dvec3 environment_brdf(const glm::dvec3& f0, double roughness, double n_v) 
     return f0 * (-1.04 * a004 + r.z) + (1.04 * a004 + r.w);
 }
 
-TEST(RingMesh, ClosedOutwardAndClearOfTheStone) {
+TEST(MetalMesh, ClosedOutwardAndClearOfTheStone) {
     const Stone stone = round_diamond();
     auto ring = gpu::make_ring({}, stone);
     ASSERT_TRUE(ring.ok()) << ring.error();
-    const gpu::RingMesh& m = ring.value();
+    const MetalMesh& m = ring.value();
     ASSERT_EQ(m.indices.size() % 3, 0u);
     for (std::uint32_t i : m.indices) ASSERT_LT(i, m.positions.size());
     for (const glm::vec3& n : m.normals) ASSERT_NEAR(glm::length(n), 1.0f, 1e-5f);
@@ -188,10 +189,10 @@ TEST(RingMesh, ClosedOutwardAndClearOfTheStone) {
         r2 = std::max(r2, double(glm::dot(q, q)));
         ASSERT_LE(std::sqrt(r2), m.radius_mm() + 1e-9);
     }
-    EXPECT_EQ(m.f0, gpu::metal_f0(gpu::RingParams::Metal::yellow_gold));
+    EXPECT_EQ(m.f0, metal_f0(gpu::RingParams::Metal::yellow_gold));
 }
 
-TEST(RingMesh, ProngsTouchTheGirdle) {
+TEST(MetalMesh, ProngsTouchTheGirdle) {
     const Stone stone = round_diamond();
     gpu::RingParams params;
     params.prongs = 6;
@@ -217,7 +218,7 @@ TEST(RingMesh, ProngsTouchTheGirdle) {
     EXPECT_TRUE(gap.t < 0.0 || gap.t > 5.0);
 }
 
-TEST(RingMesh, BadParametersAreNamed) {
+TEST(MetalMesh, BadParametersAreNamed) {
     gpu::RingParams params;
     params.prong_width_mm = 0.0;
     auto ring = gpu::make_ring(params, round_diamond());
@@ -227,14 +228,14 @@ TEST(RingMesh, BadParametersAreNamed) {
 
 TEST(RingObj, SampleLoadsClosedAndOutward) {
     const std::filesystem::path path = GEM_FIXTURES_DIR "/models/ring_band.obj";
-    auto ring = gpu::load_ring_obj(path, gpu::RingParams::Metal::platinum, 0.3);
+    auto ring = load_metal_obj(path, gpu::RingParams::Metal::platinum, 0.3);
     ASSERT_TRUE(ring.ok()) << ring.error();
-    const gpu::RingMesh& m = ring.value();
+    const MetalMesh& m = ring.value();
     EXPECT_EQ(m.indices.size(), 12u * 4u * 2u * 3u);  // 48 quads, fanned
     EXPECT_EQ(triangles_against_normals(m), 0);
     EXPECT_NEAR(volume(m), 102.0, 1e-3);  // a 12-gon annulus 2 wide: 2 · 3 (9² − 8²)
     EXPECT_NEAR(m.radius_mm(), std::hypot(1.0, 19.0), 1e-4);
-    EXPECT_EQ(m.f0, gpu::metal_f0(gpu::RingParams::Metal::platinum));
+    EXPECT_EQ(m.f0, metal_f0(gpu::RingParams::Metal::platinum));
     EXPECT_FLOAT_EQ(m.roughness, 0.3f);
 }
 
@@ -246,7 +247,7 @@ TEST(RingObj, DamagedFileNamesFileAndLine) {
         std::ofstream f(path);
         f << "# a triangle whose last corner is damaged\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n";
     }
-    auto ring = gpu::load_ring_obj(path, gpu::RingParams::Metal::silver, 0.2);
+    auto ring = load_metal_obj(path, gpu::RingParams::Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("damaged_ring.obj:5:"), std::string::npos) << ring.error();
     EXPECT_NE(ring.error().find("'x'"), std::string::npos) << ring.error();
@@ -255,11 +256,11 @@ TEST(RingObj, DamagedFileNamesFileAndLine) {
         std::ofstream f(path);
         f << "v 0 0 0\nv 1 0 0\nf 1 2 3\n";  // a face before (or without) its vertex
     }
-    ring = gpu::load_ring_obj(path, gpu::RingParams::Metal::silver, 0.2);
+    ring = load_metal_obj(path, gpu::RingParams::Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("damaged_ring.obj:3:"), std::string::npos) << ring.error();
 
-    ring = gpu::load_ring_obj(dir / "no_such_ring.obj", gpu::RingParams::Metal::silver, 0.2);
+    ring = load_metal_obj(dir / "no_such_ring.obj", gpu::RingParams::Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("no_such_ring.obj"), std::string::npos) << ring.error();
 }
@@ -272,7 +273,7 @@ TEST(GpuRing, UniformEnvironmentWithoutRingFillsEveryFace) {
     ASSERT_TRUE(background.ok()) << background.error();
     auto target = gpu::EnvironmentCube::allocate(16);
     ASSERT_TRUE(target.ok()) << target.error();
-    auto renderer = gpu::RingRenderer::make(gpu::RingMesh{});
+    auto renderer = gpu::RingRenderer::make(MetalMesh{});
     ASSERT_TRUE(renderer.ok()) << renderer.error();
     auto done = renderer.value().render_environment_cube(background.value(), target.value(), {});
     ASSERT_TRUE(done.ok()) << done.error();
@@ -294,8 +295,8 @@ TEST(GpuRing, CubeFacesShowWhatCubeFaceDirectionSays) {
     ASSERT_TRUE(ctx.ok()) << ctx.error();
     const glm::dvec3 markers[6] = {{1.0, 0.3, -0.5},    {-1.0, -0.2, 0.6}, {0.4, 1.0, 0.2},
                                    {-0.3, -1.0, -0.45}, {0.25, -0.5, 1.0}, {-0.6, 0.35, -1.0}};
-    gpu::RingMesh mesh;
-    mesh.f0 = gpu::metal_f0(gpu::RingParams::Metal::yellow_gold);
+    MetalMesh mesh;
+    mesh.f0 = metal_f0(gpu::RingParams::Metal::yellow_gold);
     for (const glm::dvec3& m : markers) {
         const glm::dvec3 c = 6.0 * glm::normalize(m);
         const glm::dvec3 axes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
@@ -351,7 +352,7 @@ TEST(GpuRing, CubeFacesShowWhatCubeFaceDirectionSays) {
     }
 }
 
-gpu::RingMesh test_ring() {
+MetalMesh test_ring() {
     auto ring = gpu::make_ring({}, round_diamond());
     EXPECT_TRUE(ring.ok()) << ring.error();
     return std::move(ring).value();
@@ -360,7 +361,7 @@ gpu::RingMesh test_ring() {
 TEST(GpuRing, FacesLookingDownSeeTheMetal) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const gpu::RingMesh ring = test_ring();
+    const MetalMesh ring = test_ring();
     const glm::dvec3 grey(0.5);
     auto background = gpu::EnvironmentCube::from_environment(Environment::uniform(grey), 8);
     ASSERT_TRUE(background.ok()) << background.error();
@@ -397,7 +398,7 @@ TEST(GpuRing, FacesLookingDownSeeTheMetal) {
 TEST(GpuRing, DrawnWhereTheCpuRayTestSeesIt) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const gpu::RingMesh ring = test_ring();
+    const MetalMesh ring = test_ring();
     const int w = 96, h = 96;
     CameraSettings settings;
     settings.azimuth_deg = 30.0;
@@ -462,7 +463,7 @@ TEST(GpuRing, DrawnWhereTheCpuRayTestSeesIt) {
 TEST(GpuRing, StudioPicture) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const gpu::RingMesh ring = test_ring();
+    const MetalMesh ring = test_ring();
     CameraSettings settings;
     settings.azimuth_deg = 35.0;
     settings.elevation_deg = 30.0;
@@ -500,7 +501,7 @@ TEST(GpuRing, StudioPicture) {
 TEST(GpuRing, DISABLED_Timing) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const gpu::RingMesh ring = test_ring();
+    const MetalMesh ring = test_ring();
     CameraSettings settings;
     settings.azimuth_deg = 35.0;
     settings.elevation_deg = 30.0;

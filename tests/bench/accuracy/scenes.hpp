@@ -25,7 +25,7 @@ struct Scene {
     // builds hold only the directions the scene can show (docs/design.md, "Model no more than
     // a scene needs").
     double min_elevation_deg = 20.0;
-    std::optional<gpu::RingMesh> ring;
+    std::optional<MetalMesh> ring;
     bool sweeps = false;  // the table settings are swept on this scene, not only the base point
 };
 

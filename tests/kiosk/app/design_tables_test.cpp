@@ -15,7 +15,7 @@
 #include <thread>
 
 #include "app/design_tables.hpp"
-#include "stone_file.hpp"
+#include "scene/stone_file.hpp"
 
 namespace gem::kiosk {
 namespace {
@@ -37,7 +37,7 @@ class DesignTablesTest : public ::testing::Test {
         stone_.design = dir_ / "emerald.toml";
         std::ofstream(stone_.design)
             << "[stone]\ncut = \"emerald\"\nwidth_mm = 2.0\n\n[material]\nname = \"emerald\"\n";
-        auto designed = tables::load_stone_file(stone_.design);
+        auto designed = load_stone_file(stone_.design);
         ASSERT_TRUE(designed.ok()) << designed.error();
         stone_.designed = std::make_shared<const Stone>(std::move(designed).value());
         config_.builder = GEMTABLES_PATH;

@@ -1,4 +1,4 @@
-#include "stone_file.hpp"
+#include "scene/stone_file.hpp"
 
 #include <fstream>
 #include <sstream>
@@ -8,7 +8,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 
-namespace gem::tables {
+namespace gem {
 
 namespace {
 
@@ -51,4 +51,4 @@ Result<Stone> load_stone_file(const std::filesystem::path& path) {
     return stone;
 }
 
-}  // namespace gem::tables
+}  // namespace gem

@@ -1,0 +1,36 @@
+#pragma once
+// Claws that hold one stone, as a jeweller makes them: each rises from below alongside the
+// pavilion, bears on the girdle, and bends over the crown, where its rounded tip rests on the
+// crown just inside the girdle ("the ends of the prongs are bent over and shaped so that they
+// rest against the crown, just past the stone's girdle"). The tip stands as high as GIA's
+// quality benchmark for a prong setting asks: 90 to 100 % of the height from the girdle to
+// the top of the table (GIA, "Quality Assurance Benchmark: setting a centre stone in a
+// platinum mounting with prongs").
+
+#include <cstddef>
+#include <vector>
+
+#include "geometry/stone.hpp"
+#include "piece/metal_mesh.hpp"
+#include "piece/piece.hpp"
+#include "util/result.hpp"
+
+namespace gem {
+
+struct ClawParams {
+    int claws = 4;
+    double width_mm = 0.8;        // the wire's diameter; the tip's ball is a little larger
+    double tip_height_pct = 95.0;  // the tip's top, as a share of girdle-to-table height
+    double first_deg = 45.0;       // azimuth of the first claw about the stone's axis
+};
+
+// Adds the claws of the stone `stones[index]` (placed in the piece) to `metal`, their feet
+// reaching down to `foot_y` in the stone's frame (into whatever carries them), with a gallery
+// rail joining them under the girdle; each tip is recorded as a Hold. Errors name the
+// parameter: a claw count or width out of range, a tip height that no place on the crown
+// gives.
+Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t index,
+                       const Placement& placement, double foot_y, MetalMesh& metal,
+                       std::vector<Hold>& holds);
+
+}  // namespace gem

@@ -1,0 +1,53 @@
+#pragma once
+// The metal of a piece as one triangle mesh with per-vertex normals, in the piece's frame
+// (millimetres), and the solids settings are built from. Each solid is closed and may overlap
+// the others: a jeweller's solder joint needs no boolean union to look right.
+
+#include <cstdint>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "piece/metal.hpp"
+#include "piece/placement.hpp"
+
+namespace gem {
+
+struct MetalMesh {
+    std::vector<glm::vec3> positions;
+    std::vector<glm::vec3> normals;      // unit, outward
+    std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
+    glm::vec3 f0{1.0f};                  // normal-incidence reflectance, linear RGB
+    float roughness = 0.25f;             // GGX perceptual roughness, 0 (mirror) .. 1
+
+    std::size_t triangle_count() const { return indices.size() / 3; }
+    // Radius of the sphere about the origin that holds the metal.
+    double radius_mm() const;
+};
+
+// Adds solids to a mesh, each made in a local frame that `frame` takes into the mesh's.
+class MeshBuilder {
+  public:
+    explicit MeshBuilder(MetalMesh& mesh, Placement frame = {}) : mesh_(mesh), frame_(frame) {}
+
+    // A tube of elliptic cross-section swept around a circle: centre `c`, the circle in the
+    // plane of e0 and e1 (unit, perpendicular), cross-section semi-axes `radial` (in that
+    // plane) and `axial` (along e0 × e1) about the circle of radius `r`.
+    void torus(const glm::dvec3& c, const glm::dvec3& e0, const glm::dvec3& e1, double r,
+               double radial, double axial, int segments, int profile);
+    // A closed cylinder of `sides` from a to c; `e1`, perpendicular to the axis, fixes where
+    // the first side vertex lies.
+    void cylinder(const glm::dvec3& a, const glm::dvec3& c, double radius, const glm::dvec3& e1,
+                  int sides);
+    void sphere(const glm::dvec3& c, double radius, int rings, int sides);
+
+  private:
+    std::uint32_t vertex(const glm::dvec3& p, const glm::dvec3& n);
+    void triangle(std::uint32_t a, std::uint32_t b, std::uint32_t c);
+    void quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::uint32_t d);
+
+    MetalMesh& mesh_;
+    Placement frame_;
+};
+
+}  // namespace gem

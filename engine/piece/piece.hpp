@@ -1,0 +1,47 @@
+#pragma once
+// A piece of jewellery: its metal and any number of stones, each with its own cut or design,
+// material and placement, in the piece's frame (millimetres; y up through the centre stone's
+// table, the finger along x for a ring). Identical stones are one entry of `kinds` that several
+// placements share, so they are traced, uploaded and built once. The CPU reference, gemrender,
+// the kiosk and catalogues all take a piece as this one description.
+
+#include <cstddef>
+#include <string>
+#include <vector>
+
+#include "geometry/stone.hpp"
+#include "piece/metal_mesh.hpp"
+#include "piece/placement.hpp"
+
+namespace gem {
+
+struct PieceStone {
+    std::size_t kind = 0;  // index into Piece::kinds
+    Placement placement;
+    std::string role;  // "centre", "halo 7", "side 2": for messages and logs
+};
+
+// A claw tip or a bead: a ball of metal that bears on one stone's crown and holds it.
+struct Hold {
+    std::size_t stone = 0;  // index into Piece::stones
+    glm::dvec3 centre{0.0};  // piece frame
+    double radius = 0.0;
+};
+
+struct Piece {
+    std::string name;
+    std::vector<Stone> kinds;
+    std::vector<PieceStone> stones;  // the first is the centre stone, the hero of the picture
+    MetalMesh metal;
+    std::vector<Hold> holds;
+
+    const Stone& stone_of(std::size_t i) const { return kinds[stones[i].kind]; }
+    // Radius of the sphere about the piece's origin that holds every stone and the metal.
+    double radius_mm() const;
+};
+
+// The one line gemrender prints for a piece:
+// "piece NAME: N stones (K distinct), M metal triangles".
+std::string describe(const Piece& piece);
+
+}  // namespace gem

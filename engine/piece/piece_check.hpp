@@ -1,0 +1,21 @@
+#pragma once
+// A piece checked as a jeweller would before it is shown: no two stones intersect, and every
+// stone is held, with metal touching it (within kHeldMm) and nowhere cutting into it deeper
+// than a setter's seat. A piece from a file that fails gets one message naming the stones by
+// their roles; settings made here pass by construction and are tested to.
+
+#include "piece/piece.hpp"
+#include "util/result.hpp"
+
+namespace gem {
+
+// The farthest the metal may stand from a stone that it holds.
+inline constexpr double kHeldMm = 0.1;
+
+Result<bool> check_piece(const Piece& piece);
+
+// Whether the two placed stones share any volume (their surfaces cross, or one holds the
+// other); stones that only touch do not.
+bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const Placement& pb);
+
+}  // namespace gem

@@ -1,0 +1,73 @@
+#pragma once
+// The exact radiance along a ray through a whole piece: rays are followed into every stone
+// with the exact tracer (each stone in its own frame, so the stone's tracer is the same one
+// a loose stone uses), out of it, off the metal and into the other stones, up to a number of
+// passes between parts; what escapes sees the environment and the lights. The metal is a
+// conductor with the F0 the GPU shades it with (Schlick's Fresnel), rough metal sampled with
+// the GGX distribution of its roughness (Walter et al. 2007, "Microfacet models for
+// refraction through rough surfaces", eq. 33, 35-36, with Smith's masking). It is the truth a
+// piece's GPU picture is measured against, and what gemrender --piece --method reference draws.
+
+#include <cstdint>
+#include <memory>
+#include <vector>
+
+#include "piece/piece.hpp"
+#include "render/environment.hpp"
+#include "render/shading.hpp"
+#include "trace/intersector.hpp"
+#include "trace/tracer.hpp"
+
+namespace gem {
+
+class PieceTracer {
+  public:
+    // Passes between parts: a ray out of one stone may reach the metal, another stone, and so
+    // on this many times; beyond, the environment stands in.
+    static constexpr int kPasses = 4;
+    // A branch whose share of the pixel falls below this is closed with the environment.
+    static constexpr double kMinShare = 1e-3;
+
+    // Keeps references: the piece, environment and settings must outlive the tracer.
+    PieceTracer(const Piece& piece, const Environment& environment,
+                const ShadingSettings& shading, const TraceSettings& trace);
+    ~PieceTracer();
+
+    // One state per thread and sample: the ray-lists of every pass and the random stream that
+    // samples rough metal.
+    struct Scratch {
+        std::vector<RayList> lists = std::vector<RayList>(kPasses + 1);
+        std::uint64_t random = 0;
+    };
+
+    // Radiance along `ray` (piece frame); `iors` holds each kind's refractive index at the
+    // wavelength being traced. `hit` says whether the ray met the piece at all.
+    glm::dvec3 radiance(const Ray& ray, const std::vector<double>& iors, Scratch& scratch,
+                        bool* hit = nullptr) const;
+
+  private:
+    struct Nearest;
+    Nearest nearest(const Ray& ray, int skip_stone) const;
+    // What `ray` brings back from the part it meets first (`n`), and from a ray leaving a part
+    // with `weight` of the pixel's share (escaping, or on to the next part).
+    glm::dvec3 follow(const Ray& ray, const Nearest& n, const std::vector<double>& iors, int pass,
+                      double share, Scratch& scratch) const;
+    glm::dvec3 onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
+                      const glm::dvec3& weight, const std::vector<double>& iors, int pass,
+                      double share, Scratch& scratch) const;
+    glm::dvec3 escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal) const;
+    glm::dvec3 metal(const Ray& ray, const SurfaceHit& hit, const std::vector<double>& iors,
+                     int pass, double share, Scratch& scratch) const;
+
+    const Piece& piece_;
+    const Environment& environment_;
+    const ShadingSettings& shading_;
+    const TraceSettings& trace_;
+    std::vector<Tracer> tracers_;                           // one per kind
+    std::vector<std::unique_ptr<Intersector>> entries_;     // one per kind
+    std::vector<double> radii_;                             // one per kind
+    Stone metal_solid_;                                     // the metal's triangles
+    std::unique_ptr<Intersector> metal_;
+};
+
+}  // namespace gem
