@@ -211,10 +211,7 @@ int main(int argc, char** argv) {
         if (!loaded) return fail(loaded.error());
         piece = std::move(loaded).value();
         std::printf("gemrender: %s\n", gem::describe(*piece).c_str());
-        if (o.method != "reference") {
-            return fail("--piece: the GPU methods draw one stone; a piece is drawn by --method "
-                        "reference");
-        }
+        o.gpu.piece = &*piece;
     }
     if (o.method != "reference") {
         o.gpu.method = o.method;

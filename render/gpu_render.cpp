@@ -50,10 +50,14 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         setup.material = setup.database->material();
     } else if (o.method == "trace" || o.method == "phong") {
         setup.method = o.method == "trace" ? gpu::Method::trace : gpu::Method::phong;
-        auto stone = build_stone(scene);
-        if (!stone) return fail(stone.error());
-        setup.stone = std::move(stone).value();
-        setup.material = setup.stone.material;
+        if (o.piece != nullptr) {
+            setup.piece = o.piece;
+        } else {
+            auto stone = build_stone(scene);
+            if (!stone) return fail(stone.error());
+            setup.stone = std::move(stone).value();
+            setup.material = setup.stone.material;
+        }
     } else {
         return fail("--method: unknown method '" + o.method + "'");
     }
@@ -77,8 +81,11 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         setup.background_colour = glm::vec3(scene.environment.background_colour);
     }
 
+    if (o.piece != nullptr && setup.method == gpu::Method::table) {
+        return fail("--piece: drawn by trace, phong or reference (a database holds one stone)");
+    }
     MetalMesh ring;
-    if (!o.ring.empty()) {
+    if (!o.ring.empty() && o.piece == nullptr) {
         const std::optional<Metal> metal = parse_metal(o.metal);
         if (!metal) {
             return fail("--metal: unknown metal '" + o.metal + "' (" + kMetalNames + ")");
@@ -105,6 +112,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         std::printf("gemrender: trace finds exits by %s (64×64 test: %s)\n",
                     gpu::to_string(trace->exit_search()), trace->measurement().c_str());
     }
+    // A piece is framed by its bounding sphere, as the CPU reference frames it; a stone by its.
+    const double framing_mm = o.piece != nullptr ? o.piece->radius_mm() : r.stone_radius_mm();
     auto target = gpu::RenderTarget::make(scene.width, scene.height);
     if (!target) return fail(target.error());
     auto hdr = gpu::HdrPicture::make(scene.width, scene.height,
@@ -127,7 +136,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     for (int f = 0; f < o.frames; ++f) {
         CameraSettings cs = scene.camera;
         cs.azimuth_deg += step * f;
-        auto camera = Camera::make(cs, r.stone_radius_mm(), scene.width, scene.height);
+        auto camera = Camera::make(cs, framing_mm, scene.width, scene.height);
         if (!camera) return fail(camera.error());
         if (r.table() != nullptr && o.frames > 1) {
             // The turntable turns about +y at `step` per frame of a 60 Hz display.
@@ -143,7 +152,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
             hdr.value().begin_frame(still);
             CameraSettings jittered = cs;
             jittered.shift += hdr.value().jitter_ndc();
-            auto moved = Camera::make(jittered, r.stone_radius_mm(), scene.width, scene.height);
+            auto moved = Camera::make(jittered, framing_mm, scene.width, scene.height);
             if (!moved) return Error{moved.error()};
             hdr.value().bind();
             auto drawn = r.render(moved.value(), gpu::FrameWait::none);

@@ -5,6 +5,7 @@
 
 #include <string>
 
+#include "piece/piece.hpp"
 #include "render/tone_map.hpp"
 #include "scene/scene.hpp"
 
@@ -26,6 +27,8 @@ struct GpuRenderOptions {
     double glare = 0.0;        // glare share (the kiosk's bloom); 0 compares with the CPU
     int still_frames = 1;      // one picture: frames a sub-pixel apart averaged, as a still
                                // kiosk view is
+    const Piece* piece = nullptr;  // trace, phong: the piece instead of the scene's stone and a
+                                   // ring, framed by its bounding sphere as the CPU frames it
 };
 
 // Returns the process exit status; messages go to stdout/stderr prefixed "gemrender:".

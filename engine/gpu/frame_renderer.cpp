@@ -1,6 +1,7 @@
 #include "gpu/frame_renderer.hpp"
 
 #include <chrono>
+#include <vector>
 
 #include "gpu/gl_check.hpp"
 #include "gpu/phong_method.hpp"
@@ -26,6 +27,7 @@ FrameRenderer& FrameRenderer::operator=(FrameRenderer&&) noexcept = default;
 FrameRenderer::~FrameRenderer() = default;
 
 const Stone& FrameRenderer::stone() const {
+    if (setup_.piece != nullptr) return setup_.piece->stone_of(0);
     return setup_.method == Method::table ? setup_.database->stone() : setup_.stone;
 }
 
@@ -44,36 +46,56 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     if (!cube) return Error{cube.error()};
     r.environment_cube_ = std::make_unique<EnvironmentCube>(std::move(cube).value());
 
-    switch (s.method) {
-        case Method::table: {
-            auto m = TableMethod::make(s.database, s.table);
-            if (!m) return Error{m.error()};
-            r.table_ = std::make_unique<TableMethod>(std::move(m).value());
-            break;
+    // The kinds of stone and where each stone is drawn: a piece's, or the one loose stone.
+    std::vector<const Stone*> kinds;
+    if (s.piece != nullptr) {
+        if (s.method == Method::table) {
+            return Error{"frame renderer: a piece is drawn by trace or phong (a database holds "
+                         "one loose stone)"};
         }
-        case Method::trace: {
-            auto m = TraceMethod::make(s.stone);
-            if (!m) return Error{m.error()};
-            r.trace_ = std::make_unique<TraceMethod>(std::move(m).value());
-            break;
+        if (s.piece->stones.empty()) return Error{"frame renderer: the piece has no stones"};
+        for (const Stone& kind : s.piece->kinds) kinds.push_back(&kind);
+        for (const PieceStone& p : s.piece->stones) {
+            r.instances_.push_back({kinds[p.kind], p.kind, kinds[p.kind]->material, p.placement});
         }
-        case Method::phong: {
-            auto m = PhongMethod::make(s.stone, s.shading.h);
-            if (!m) return Error{m.error()};
-            r.phong_ = std::make_unique<PhongMethod>(std::move(m).value());
-            break;
+    } else {
+        kinds.push_back(&r.stone());
+        r.instances_.push_back({kinds[0], 0, s.material, {}});
+    }
+    for (const Stone* kind : kinds) {
+        switch (s.method) {
+            case Method::table: {
+                auto m = TableMethod::make(s.database, s.table);
+                if (!m) return Error{m.error()};
+                r.table_ = std::make_unique<TableMethod>(std::move(m).value());
+                break;
+            }
+            case Method::trace: {
+                auto m = TraceMethod::make(*kind);
+                if (!m) return Error{m.error()};
+                r.trace_.push_back(std::make_unique<TraceMethod>(std::move(m).value()));
+                break;
+            }
+            case Method::phong: {
+                auto m = PhongMethod::make(*kind, s.shading.h);
+                if (!m) return Error{m.error()};
+                r.phong_.push_back(std::make_unique<PhongMethod>(std::move(m).value()));
+                break;
+            }
         }
     }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
-    r.scene_radius_mm_ = r.stone_radius_mm_ * 1.01;
-    if (s.ring != nullptr) {
-        auto ring = RingRenderer::make(*s.ring);
+    r.scene_radius_mm_ =
+        (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
+    const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;
+    if (metal != nullptr && !metal->indices.empty()) {
+        auto ring = RingRenderer::make(*metal);
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
-        r.scene_radius_mm_ = std::max(r.scene_radius_mm_, s.ring->radius_mm() * 1.01);
+        r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         // The ring sits about as far from the stone as its own radius: that is where the
         // virtual cube's faces stand, so rays leaving off-centre see it with parallax.
-        r.cube_half_mm_ = s.ring->radius_mm();
+        r.cube_half_mm_ = metal->radius_mm();
         auto ring_cube = EnvironmentCube::allocate(s.cube_face);
         if (!ring_cube) return Error{ring_cube.error()};
         r.ring_cube_ = std::make_unique<EnvironmentCube>(std::move(ring_cube).value());
@@ -117,18 +139,22 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     const auto stone_start = Clock::now();
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
-    StoneFrame frame{&stone(), setup_.material, camera,          setup_.shading,
-                     &seen,    cube_half_mm_,   scene_radius_mm_};
-    switch (setup_.method) {
-        case Method::table:
-            ok = table_->draw(frame, &stats.table);
-            break;
-        case Method::trace:
-            ok = trace_->draw(frame, setup_.trace, setup_.trace_dispersion);
-            break;
-        case Method::phong:
-            ok = phong_->draw(frame);
-            break;
+    for (const Instance& instance : instances_) {
+        const StoneFrame frame{instance.stone,   instance.material, camera,
+                               setup_.shading,   &seen,             cube_half_mm_,
+                               scene_radius_mm_, instance.placement};
+        switch (setup_.method) {
+            case Method::table:
+                ok = table_->draw(frame, &stats.table);
+                break;
+            case Method::trace:
+                ok = trace_[instance.kind]->draw(frame, setup_.trace, setup_.trace_dispersion);
+                break;
+            case Method::phong:
+                ok = phong_[instance.kind]->draw(frame);
+                break;
+        }
+        if (!ok) return Error{ok.error()};
     }
     if (!ok) return Error{ok.error()};
     if (wait == FrameWait::passes) {

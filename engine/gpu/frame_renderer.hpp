@@ -14,6 +14,7 @@
 #include "gpu/table_method.hpp"
 #include "gpu/trace_method.hpp"
 #include "piece/metal_mesh.hpp"
+#include "piece/piece.hpp"
 #include "render/environment.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
@@ -40,7 +41,11 @@ struct FrameSetup {
     const Environment* environment = nullptr;
     int cube_face = 512;                         // virtual-cube face size, texels
     std::optional<glm::vec3> background_colour;  // else the environment shows behind
-    const MetalMesh* ring = nullptr;              // optional jewellery around the stone
+    const MetalMesh* ring = nullptr;             // optional jewellery around the stone
+    // trace, phong: a whole piece instead of `stone` and `ring`: every stone drawn in its own
+    // frame (identical stones share their method's programs and stone block), the piece's
+    // metal around them. Must outlive the renderer.
+    const Piece* piece = nullptr;
 };
 
 // What render() waits for: nothing (a display's swap paces it), the whole frame (timing), or
@@ -68,12 +73,14 @@ class FrameRenderer {
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 
+    // The stone (a piece's centre stone).
     const Stone& stone() const;
     // Radius about the stone's centre that holds the stone and the ring.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
     TableMethod* table() { return table_.get(); }
-    const TraceMethod* trace() const { return trace_.get(); }
+    // The trace of the (centre) stone.
+    const TraceMethod* trace() const { return trace_.empty() ? nullptr : trace_.front().get(); }
 
   private:
     FrameRenderer() = default;
@@ -83,9 +90,17 @@ class FrameRenderer {
     std::unique_ptr<BackgroundPass> background_;
     std::unique_ptr<EnvironmentCube> environment_cube_;  // the environment alone
     std::unique_ptr<EnvironmentCube> ring_cube_;         // environment + ring, from the centre
+    // A stone drawn: which kind (its method below) and where.
+    struct Instance {
+        const Stone* stone = nullptr;
+        std::size_t kind = 0;
+        Material material;
+        Placement placement;
+    };
+    std::vector<Instance> instances_;
     std::unique_ptr<TableMethod> table_;
-    std::unique_ptr<TraceMethod> trace_;
-    std::unique_ptr<PhongMethod> phong_;
+    std::vector<std::unique_ptr<TraceMethod>> trace_;  // one per kind of stone
+    std::vector<std::unique_ptr<PhongMethod>> phong_;  // one per kind of stone
     std::unique_ptr<RingRenderer> ring_;
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;

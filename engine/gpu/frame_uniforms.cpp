@@ -56,6 +56,18 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
     program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));
 }
 
+Camera stone_camera(const StoneFrame& frame) {
+    return frame.camera.in_frame(frame.placement.rotation, frame.placement.position);
+}
+
+void set_camera_uniforms(const Program& program, const StoneFrame& frame) {
+    set_camera_uniforms(program, stone_camera(frame), frame.scene_radius_mm);
+    glm::dmat4 model(frame.placement.rotation);
+    model[3] = glm::dvec4(frame.placement.position, 1.0);
+    program.set("u_view_projection",
+                glm::mat4(glm::dmat4(view_projection(frame.camera, frame.scene_radius_mm)) * model));
+}
+
 std::uint32_t shading_features(const StoneFrame& frame) {
     std::uint32_t features = 0;
     if (frame.shading.model == ShadingModel::thesis) features |= kThesisShading;
@@ -71,13 +83,16 @@ std::uint32_t shading_features(const StoneFrame& frame) {
            specular_power_feature(frame.shading.h);
 }
 
-void set_light_uniforms(const Program& program, const std::vector<Light>& lights) {
+void set_light_uniforms(const Program& program, const std::vector<Light>& lights,
+                        const Placement& placement) {
     glm::vec4 position[kMaxLights] = {};
     glm::vec3 colour[kMaxLights] = {};
     const int count = light_count_of(light_count_feature(lights));
     for (int i = 0; i < count; ++i) {
         const Light& l = lights[static_cast<std::size_t>(i)];
-        position[i] = glm::vec4(glm::vec3(l.position), l.directional ? 0.0f : 1.0f);
+        position[i] = l.directional
+                          ? glm::vec4(glm::vec3(placement.direction_to_stone(l.position)), 0.0f)
+                          : glm::vec4(glm::vec3(placement.to_stone(l.position)), 1.0f);
         colour[i] = glm::vec3(l.colour);
     }
     glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
@@ -97,8 +112,10 @@ SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& fr
     glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
     program.set("u_environment", unit);
     program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
+    program.set("u_frame_rotation", glm::mat3(frame.placement.rotation));
+    program.set("u_frame_origin", glm::vec3(frame.placement.position));
     const ShadingSettings& s = frame.shading;
-    set_light_uniforms(program, s.lights);
+    set_light_uniforms(program, s.lights, frame.placement);
     program.set("u_k_s", static_cast<float>(s.k_s));
     program.set("u_k_st", static_cast<float>(s.k_st));
     program.set("u_h", static_cast<float>(s.h));

@@ -7,6 +7,7 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
+#include "piece/placement.hpp"
 #include "render/camera.hpp"
 #include "render/shading.hpp"
 
@@ -20,7 +21,18 @@ struct StoneFrame {
     const EnvironmentCube* environment = nullptr;
     double cube_half_mm = 0.0;      // the virtual cube's half side; 0 puts it at infinity
     double scene_radius_mm = 10.0;  // holds everything drawn (depth range, view_projection)
+    // Where the stone sits in the piece (identity: a loose stone). The stone is shaded in its
+    // own frame: its camera and lights are moved into it, and its exits back out to the cube.
+    Placement placement{};
 };
+
+// The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).
+Camera stone_camera(const StoneFrame& frame);
+
+// Sets camera.glsl's uniforms for drawing the stone of `frame` in its own frame: the stone's
+// camera, and a u_view_projection that places the stone's vertices in the piece, so the depth
+// of every stone and of the metal is measured alike.
+void set_camera_uniforms(const Program& program, const StoneFrame& frame);
 
 // Sets camera.glsl's uniforms, u_view_projection among them.
 void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm);
@@ -37,8 +49,10 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 std::uint32_t shading_features(const StoneFrame& frame);
 
 // u_light_position (w = 1: a point, 0: a direction) and u_light_colour of the first kMaxLights
-// lights; their count is compiled into the program (light_count_feature).
-void set_light_uniforms(const Program& program, const std::vector<Light>& lights);
+// lights, moved into the frame `placement` puts in the piece; their count is compiled into the
+// program (light_count_feature).
+void set_light_uniforms(const Program& program, const std::vector<Light>& lights,
+                        const Placement& placement = {});
 
 // A sampler bound to a texture unit for as long as this lives (it overrides the filter of
 // whatever texture a later pass binds to the unit).

@@ -24,7 +24,7 @@ Result<PhongMethod> PhongMethod::make(const Stone& stone, double h) {
 }
 
 Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
-    const Camera& camera = frame.camera;
+    const Camera camera = stone_camera(frame);
     if (specular_power_feature(frame.shading.h) != specular_power_) {
         char h[32];
         std::snprintf(h, sizeof h, "%g", frame.shading.h);
@@ -34,7 +34,7 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     const Program& program =
         *programs_.find(light_count_feature(frame.shading.lights) | specular_power_);
     program.use();
-    program.set("u_view_projection", view_projection(camera, frame.scene_radius_mm));
+    set_camera_uniforms(program, frame);
     const bool at_infinity = camera.orthographic();
     program.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
                                      : glm::vec3(-camera.forward() * camera.distance()));

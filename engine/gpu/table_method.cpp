@@ -132,7 +132,7 @@ Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acqu
 
 Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_out) {
     TableFrameStats stats;
-    const Camera& camera = frame.camera;
+    const Camera camera = stone_camera(frame);
     const CameraModel& model = database_->camera();
     const bool perspective = model.kind == CameraModel::Kind::perspective;
     if (perspective == camera.orthographic() ||
@@ -229,7 +229,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     }
     const Program& p = *chosen.value();
     p.use();
-    set_camera_uniforms(p, camera, frame.scene_radius_mm);
+    set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, 0);
     stone_->bind(p, 1);
     p.set("u_field_mm", static_cast<float>(model.field_mm));

@@ -233,7 +233,7 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
     p.use();
-    set_camera_uniforms(p, frame.camera, frame.scene_radius_mm);
+    set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, kEnvironmentUnit);
     geometry_.bind(p, kStoneUnit);
     p.set("u_facet_count", geometry_.facet_count());

@@ -12,6 +12,21 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 }  // namespace
 
+Camera Camera::in_frame(const glm::dmat3& rotation, const glm::dvec3& position) const {
+    Camera c = *this;
+    const glm::dmat3 back = glm::transpose(rotation);
+    c.forward_ = back * forward_;
+    c.right_ = back * right_;
+    c.up_ = back * up_;
+    if (!orthographic()) return c;
+    // A ray at image offset s: −f·start + s·(r, u) here is −f·(start + a) + (s − (b, c))·(r, u)
+    // in the other frame, where (a, b, c) is `position` along (f, r, u).
+    c.ray_start_ = ray_start_ + glm::dot(position, forward_);
+    c.shift_ += glm::dvec2(glm::dot(position, right_) / (0.5 * width_ * pixel_size_),
+                           glm::dot(position, up_) / (0.5 * height_ * pixel_size_));
+    return c;
+}
+
 double bounding_radius(const std::vector<glm::dvec3>& vertices) {
     double r2 = 0.0;
     for (const glm::dvec3& v : vertices) r2 = std::max(r2, glm::dot(v, v));

@@ -32,6 +32,13 @@ class Camera {
     static Result<Camera> make(const CameraSettings& settings, double bounding_radius_mm, int width,
                                int height);
 
+    // The same camera, its rays written in another frame: `rotation` and `position` take that
+    // frame's points into this camera's frame (a stone placed in a piece). The picture is the
+    // same; the rays start elsewhere and the stone's centre appears shifted. Orthographic
+    // cameras only (a perspective eye off the stone's axis is no orbit about its centre); a
+    // perspective camera comes back unchanged for the identity alone.
+    Camera in_frame(const glm::dmat3& rotation, const glm::dvec3& position) const;
+
     // The ray through image position (px, py) in pixels: (0, 0) the top-left corner of the
     // image, (width, height) the bottom-right one; pixel (i, j) covers [i, i+1) × [j, j+1).
     Ray ray(double px, double py) const;

@@ -16,6 +16,7 @@ flat in uint v_facet;
 out vec4 o_colour;
 
 uniform samplerCube u_environment;
+uniform mat3 u_frame_rotation;  // the stone's frame in the piece's, where the cube stands
 uniform vec3 u_eye;             // eye position; a direction toward the eye when at infinity
 uniform int u_eye_at_infinity;  // 1: orthographic camera
 uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
@@ -44,7 +45,7 @@ void main() {
         float r_v = max(dot(reflect(-l, n), v), 0.0);
         specular += u_light_colour[i] * (u_k_s * specular_power(r_v));
     }
-    vec3 ambient = textureLod(u_environment, n, 0.0).rgb;
+    vec3 ambient = textureLod(u_environment, u_frame_rotation * n, 0.0).rgb;
     vec3 colour = u_stone_colour * (kAmbient * ambient + kDiffuse * diffuse) + specular;
     o_colour = vec4(colour, clamp(1.0 - u_alpha, 0.0, 1.0));
 }
