@@ -1,15 +1,10 @@
 #pragma once
-// The ring a stone is set in (docs/design.md, "Jewellery"), as a triangle mesh with
-// per-vertex normals in the STONE frame: the stone's centre at the origin, table up +y, girdle
-// in the xz plane. The finger runs along x: the shank is a circle in the yz plane below the
-// culet, and prongs rise from it to hold the stone at its girdle. Either made to fit a stone
-// (make_ring) or read from a Wavefront OBJ already in the stone frame (piece/metal_obj.hpp).
-
-#include <cstdint>
-#include <filesystem>
-#include <vector>
-
-#include <glm/glm.hpp>
+// The ring a catalogue stone is set in (docs/design.md, "Jewellery"): the solitaire setting
+// (piece/settings.hpp) made to fit the stone, as a triangle mesh with per-vertex normals in
+// the STONE frame: the stone's centre at the origin, table up +y, girdle in the xz plane. The
+// finger runs along x: the shank is a circle in the yz plane below the culet, and the claws
+// rise from it, bear on the girdle and bend over the crown, their tips resting on it. A ring
+// of one's own is read from a Wavefront OBJ in the stone frame (piece/metal_obj.hpp).
 
 #include "geometry/stone.hpp"
 #include "piece/metal_mesh.hpp"
@@ -21,15 +16,14 @@ struct RingParams {
     double inner_radius_mm = 8.5;  // the finger's radius (8.5 mm: about US size 7)
     double band_width_mm = 2.0;    // along the finger
     double band_thickness_mm = 1.6;
-    int prongs = 4;  // 0: a plain band under the stone
-    double prong_width_mm = 0.8;
+    int prongs = 4;               // 2..12
+    double prong_width_mm = 0.0;  // 0: fitted to the stone (piece/claws.hpp)
     using Metal = gem::Metal;
     Metal metal = Metal::yellow_gold;
     double roughness = 0.25;  // GGX perceptual roughness, 0 (mirror) .. 1
-    int segments = 96;        // around the shank
 };
 
-// Fitted to the stone: prongs touch the girdle at its outline along their azimuths, the shank
+// Fitted to the stone: the claws touch the girdle and their tips sit on the crown, the shank
 // clears the culet. Errors name the parameter out of range.
 Result<MetalMesh> make_ring(const RingParams& params, const Stone& stone);
 

@@ -127,9 +127,13 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
             }
             const glm::dvec3 c = left.placement.to_piece(*seated);
             b.sphere(c, bead, 8, 12);
-            const glm::dvec3 wall_top =
-                centre_of_gap + (across > 0.0 ? 1.0 : -1.0) * wall_z * f.side + e.girdle_top * f.up;
-            b.cylinder(c, wall_top, 0.45 * bead, f.tangent, 8);
+            // The stalk meets the wall a little above its top, so that it passes over the
+            // girdles' corners on its way.
+            const double stalk = 0.45 * bead;
+            const glm::dvec3 wall_top = centre_of_gap + (across > 0.0 ? 1.0 : -1.0) * wall_z * f.side +
+                                        (e.girdle_top + stalk) * f.up;
+            b.cylinder(c, wall_top, stalk, f.tangent, 8);
+            b.sphere(wall_top, stalk, 6, 8);
             const std::size_t right = first + static_cast<std::size_t>((k + 1) % n);
             piece.holds.push_back({first + static_cast<std::size_t>(k), c, bead});
             piece.holds.push_back({right, c, bead});

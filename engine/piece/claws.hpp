@@ -19,10 +19,15 @@ namespace gem {
 
 struct ClawParams {
     int claws = 4;
-    double width_mm = 0.8;        // the wire's diameter; the tip's ball is a little larger
+    double width_mm = 0.0;  // the wire's diameter (the tip's ball is a little larger); 0: fit
+                            // the stone (an eighth of its width, thinner on a low crown)
     double tip_height_pct = 95.0;  // the tip's top, as a share of girdle-to-table height
     double first_deg = 45.0;       // azimuth of the first claw about the stone's axis
 };
+
+// The claws' width before any thinning for a low crown: the one asked for, or an eighth of the
+// stone's width (0.3 to 1.2 mm).
+double claw_width(const ClawParams& params, const Stone& stone);
 
 // Adds the claws of the stone `stones[index]` (placed in the piece) to `metal`, their feet
 // reaching down to `foot_y` in the stone's frame (into whatever carries them), with a gallery

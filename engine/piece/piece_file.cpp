@@ -30,16 +30,6 @@ struct StoneChoice {
     double width_mm = 0.0;  // 0: the description's own size
 };
 
-// The girdle's width as a jeweller measures it: the short side of its outline.
-double girdle_width(const Stone& stone) {
-    glm::dvec3 lo(1e300), hi(-1e300);
-    for (const glm::dvec3& v : stone.vertices) {
-        lo = glm::min(lo, v);
-        hi = glm::max(hi, v);
-    }
-    return std::min(hi.x - lo.x, hi.z - lo.z);
-}
-
 class PieceReader {
   public:
     PieceReader(std::string name, std::filesystem::path base)

@@ -52,10 +52,11 @@ Result<double> set_centre(const SettingParams& p, Piece& piece) {
     return add_shank(p.shank, shank_top, p.shank.width_mm, piece.metal);
 }
 
-// Claws for a smaller stone: the centre's, scaled to its width (never under 0.4 mm).
+// Claws for a smaller stone: the centre's, scaled to its width (never under 0.4 mm), or fitted
+// to it as the centre's are.
 ClawParams scaled_claws(const ClawParams& c, double width, double centre_width) {
     ClawParams s = c;
-    s.width_mm = std::max(0.4, c.width_mm * width / centre_width);
+    if (c.width_mm != 0.0) s.width_mm = std::max(0.4, c.width_mm * width / centre_width);
     return s;
 }
 
@@ -72,8 +73,10 @@ Result<bool> make_three_stone(const SettingParams& p, Piece& piece) {
     const glm::dvec3 axis_centre(0.0, shank_y.value(), 0.0);
     const double reach = -shank_y.value();
     const double shank_outer = 0.5 * p.shank.finger_diameter_mm + p.shank.thickness_mm;
-    const double apart =
-        c.girdle_radius + s.girdle_radius + 0.5 * (p.claws.width_mm + side.width_mm) + 0.3;
+    const double apart = c.girdle_radius + s.girdle_radius +
+                         0.5 * (claw_width(p.claws, piece.kinds[0]) +
+                                claw_width(side, piece.kinds[1])) +
+                         0.3;
     double lo = 0.0, hi = 0.5 * kPi;
     for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
@@ -101,22 +104,25 @@ Result<bool> make_halo(const SettingParams& p, Piece& piece) {
     // The row's inner wall clears the claws' uprights; its tables sit just under the centre's
     // girdle, so the centre stands proud of its halo.
     RowCircle circle;
-    circle.radius = c.girdle_radius + p.claws.width_mm + 2.0 * kClearanceMm + p.row.wall_mm +
-                    s.girdle_radius;
+    const double claw = claw_width(p.claws, piece.kinds[0]);
+    circle.radius = c.girdle_radius + claw + 2.0 * kClearanceMm + p.row.wall_mm + s.girdle_radius;
     const double row_y = c.girdle_bottom - 0.1 - s.table_y;
     circle.centre = {0.0, row_y, 0.0};
     auto set = add_bead_row(p.row, circle, 1, "halo", piece);
     if (!set) return Error{set.error()};
-    // Four struts carry the halo's floor down to the shank, passing under the centre's pavilion.
-    const double floor_y = row_y + s.culet_y - kClearanceMm - 0.5 * p.row.wall_mm;
+    // Four struts carry the halo's floor down to the shank, passing under the centre's pavilion;
+    // each hangs from the floor's underside, so its end stays below the small stones' culets.
+    const double strut = 0.35 * claw;
+    const double floor_bottom = row_y + s.culet_y - kClearanceMm - p.row.wall_mm;
     const double shank_top = c.culet_y - kClearanceMm;
     MeshBuilder b(piece.metal);
     for (int k = 0; k < 4; ++k) {
         const double az = 0.5 * kPi * k;
         const glm::dvec3 out(std::cos(az), 0.0, std::sin(az));
-        b.cylinder(circle.radius * out + glm::dvec3(0.0, floor_y, 0.0),
-                   0.3 * out + glm::dvec3(0.0, shank_top - 0.3 * p.shank.thickness_mm, 0.0),
-                   0.35 * p.claws.width_mm, {0.0, 1.0, 0.0}, 8);
+        const glm::dvec3 top = circle.radius * out + glm::dvec3(0.0, floor_bottom - strut, 0.0);
+        b.cylinder(top, 0.3 * out + glm::dvec3(0.0, shank_top - 0.3 * p.shank.thickness_mm, 0.0),
+                   strut, {0.0, 1.0, 0.0}, 8);
+        b.sphere(top, strut, 8, 12);
     }
     return true;
 }

@@ -84,6 +84,15 @@ StoneExtent stone_extent(const Stone& stone) {
     return e;
 }
 
+double girdle_width(const Stone& stone) {
+    glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (const glm::dvec3& v : stone.vertices) {
+        lo = glm::min(lo, v);
+        hi = glm::max(hi, v);
+    }
+    return std::min(hi.x - lo.x, hi.z - lo.z);
+}
+
 double outline_radius(const Stone& stone, const glm::dvec3& u) {
     const ShearedRay ray(glm::dvec3(0.0), u);
     double far = 0.0;

@@ -21,6 +21,9 @@ struct StoneExtent {
 };
 StoneExtent stone_extent(const Stone& stone);
 
+// The girdle's width as a jeweller measures it: the short side of its outline.
+double girdle_width(const Stone& stone);
+
 // How far the outline reaches from the centre along horizontal direction `u` (unit, y = 0):
 // the farthest crossing of that ray with the surface, so a non-convex outline counts too.
 double outline_radius(const Stone& stone, const glm::dvec3& u);

@@ -16,6 +16,7 @@
 #include "gpu/render_target.hpp"
 #include "gpu/ring_renderer.hpp"
 #include "piece/metal_obj.hpp"
+#include "piece/seat.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
 #include "trace/tracer.hpp"
@@ -178,11 +179,12 @@ TEST(MetalMesh, ClosedOutwardAndClearOfTheStone) {
                          p.band_thickness_mm * 0.5 * p.band_width_mm;
     EXPECT_GT(volume(m), 0.97 * shank);
     EXPECT_LT(volume(m), 1.3 * shank);
-    // No vertex inside the (convex) stone; the shank clears the culet.
+    // No vertex inside the (convex) stone deeper than a claw tip's seat; the shank clears the
+    // culet.
     for (const glm::vec3& q : m.positions) {
         double outside = -1e9;
         for (const Facet& f : stone.facets) outside = std::max(outside, f.plane.signed_distance(q));
-        ASSERT_GT(outside, -1e-6) << q.x << " " << q.y << " " << q.z;
+        ASSERT_GT(outside, -kSeatMm - 1e-6) << q.x << " " << q.y << " " << q.z;
     }
     for (const glm::vec3& q : m.positions) {
         double r2 = 0.0;
@@ -220,7 +222,7 @@ TEST(MetalMesh, ProngsTouchTheGirdle) {
 
 TEST(MetalMesh, BadParametersAreNamed) {
     gpu::RingParams params;
-    params.prong_width_mm = 0.0;
+    params.prong_width_mm = 5.0;
     auto ring = gpu::make_ring(params, round_diamond());
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("prong_width_mm"), std::string::npos) << ring.error();

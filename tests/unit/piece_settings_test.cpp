@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <array>
 #include <map>
 #include <string>
 
@@ -128,6 +129,54 @@ TEST_P(EverySetting, NoMetalCutsIntoAStoneDeeperThanTheSeat) {
                                depth_inside(stone, piece.stones[i].placement.to_stone(glm::dvec3(v))));
         }
         EXPECT_LE(deepest, kSeatMm + 1e-6) << piece.stones[i].role;
+    }
+}
+
+// Rays from each stone's centre outward: any metal they meet inside the stone must lie within a
+// seat of its surface, so no claw, wall or bead passes through a stone between its vertices. Möller and Trumbore's ray-triangle test, written here apart from the engine's.
+double ray_hits_triangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a,
+                         const glm::dvec3& b, const glm::dvec3& c) {
+    const glm::dvec3 e1 = b - a, e2 = c - a, q = glm::cross(d, e2);
+    const double det = glm::dot(e1, q);
+    if (std::abs(det) < 1e-14) return -1.0;
+    const glm::dvec3 t = o - a;
+    const double u = glm::dot(t, q) / det;
+    if (u < 0.0 || u > 1.0) return -1.0;
+    const glm::dvec3 r = glm::cross(t, e1);
+    const double v = glm::dot(d, r) / det;
+    if (v < 0.0 || u + v > 1.0) return -1.0;
+    return glm::dot(e2, r) / det;
+}
+
+TEST_P(EverySetting, RaysFromEachStonesCentreLeaveTheStoneBeforeTheyMeetMetal) {
+    const Piece piece = setting(GetParam());
+    const std::vector<glm::dvec3> directions = sphere_points(400);
+    for (std::size_t i = 0; i < piece.stones.size(); ++i) {
+        const Stone& stone = piece.stone_of(i);
+        const Placement& place = piece.stones[i].placement;
+        double radius = 0.0;
+        for (const glm::dvec3& v : stone.vertices) radius = std::max(radius, glm::length(v));
+        // The metal's triangles near the stone, in its frame.
+        std::vector<std::array<glm::dvec3, 3>> near;
+        for (std::size_t t = 0; t < piece.metal.indices.size(); t += 3) {
+            std::array<glm::dvec3, 3> tri;
+            bool close = false;
+            for (int k = 0; k < 3; ++k) {
+                tri[k] = place.to_stone(glm::dvec3(piece.metal.positions[piece.metal.indices[t + k]]));
+                close = close || glm::length(tri[k]) < radius + 1.0;
+            }
+            if (close) near.push_back(tri);
+        }
+        int cut = 0;
+        for (const glm::dvec3& d : directions) {
+            for (const auto& tri : near) {
+                const double t = ray_hits_triangle(glm::dvec3(0.0), d, tri[0], tri[1], tri[2]);
+                // Metal met inside the stone, deeper below its surface than a seat.
+                if (t > 0.0 && depth_inside(stone, t * d) > kSeatMm + 1e-6) ++cut;
+            }
+        }
+        EXPECT_EQ(cut, 0) << piece.stones[i].role;
+        if (GetParam() == SettingKind::band && i >= 3) break;  // the band's stones are alike
     }
 }
 
