@@ -1,11 +1,9 @@
 #pragma once
-// Claws that hold one stone, as a jeweller makes them: each rises from below alongside the
-// pavilion, bears on the girdle, and bends over the crown, where its rounded tip rests on the
-// crown just inside the girdle ("the ends of the prongs are bent over and shaped so that they
-// rest against the crown, just past the stone's girdle"). The tip stands as high as GIA's
-// quality benchmark for a prong setting asks: 90 to 100 % of the height from the girdle to
-// the top of the table (GIA, "Quality Assurance Benchmark: setting a centre stone in a
-// platinum mounting with prongs").
+// Claws that hold one stone, as a jeweller makes them: each rises from below beside the
+// pavilion, bears on the girdle and is bent over the crown, where its rounded end rests just
+// inside the girdle. The end stands as high as GIA's quality-assurance benchmark for a prong
+// setting asks: 90 to 100 % of the height from the girdle to the top of the table (GIA,
+// "Setting a princess-cut center stone in a platinum mounting with V-prongs", gia.edu).
 
 #include <cstddef>
 #include <vector>

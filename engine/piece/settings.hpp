@@ -1,9 +1,10 @@
 #pragma once
-// Parametric settings: the pieces a shop sells most, made to fit their stones. Proportions
-// are those jewellers use: a claw about an eighth of the stone's width with its tip at 90 to
-// 100 % of the crown's height (claws.hpp), melee of 1 to 1.5 mm in a halo and along a band,
-// side stones about 0.6 of the centre's width in a three-stone ring, and a ring size given as
-// the finger's diameter (17.3 mm is US size 7, ISO 8653 size 54.4).
+// Parametric settings: the pieces a shop sells most, made to fit their stones. The claws' tips
+// stand at 90 to 100 % of the crown's height, as GIA's benchmark asks (claws.hpp); the other
+// proportions are defaults chosen here and set per piece: a claw an eighth of the stone's
+// width, small stones 0.15 mm apart with beads a fifth of their width, and a ring size given
+// as the finger's diameter (17.3 mm is US size 7; ISO 8653 sizes a ring by its inner
+// circumference, here 54.4 mm).
 
 #include <optional>
 #include <string>

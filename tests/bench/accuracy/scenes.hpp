@@ -32,7 +32,7 @@ struct Scene {
 // Direction from the stone toward the eye at azimuth/elevation (degrees), as Camera does.
 glm::dvec3 direction_from(double azimuth_deg, double elevation_deg);
 
-// Diamond face-up and tilted, the diamond in a four-prong ring, an oval sapphire, a heart
+// Diamond face-up and tilted, the diamond in its solitaire ring, an oval sapphire, a heart
 // ruby. `quick`: the face-up diamond only.
 Result<std::vector<Scene>> make_scenes(bool quick);
 
