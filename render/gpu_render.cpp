@@ -81,11 +81,11 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         setup.background_colour = glm::vec3(scene.environment.background_colour);
     }
 
-    if (o.piece != nullptr && setup.method == gpu::Method::table) {
-        return fail("--piece: drawn by trace, phong or reference (a database holds one stone)");
+    if (o.piece != nullptr && !o.ring.empty()) {
+        return fail("--ring: a piece brings its own metal");
     }
     MetalMesh ring;
-    if (!o.ring.empty() && o.piece == nullptr) {
+    if (!o.ring.empty()) {
         const std::optional<Metal> metal = parse_metal(o.metal);
         if (!metal) {
             return fail("--metal: unknown metal '" + o.metal + "' (" + kMetalNames + ")");

@@ -56,12 +56,20 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (s.piece->stones.empty()) return Error{"frame renderer: the piece has no stones"};
         for (const Stone& kind : s.piece->kinds) kinds.push_back(&kind);
         for (const PieceStone& p : s.piece->stones) {
-            r.instances_.push_back({kinds[p.kind], p.kind, kinds[p.kind]->material, p.placement});
+            StoneFrame frame;
+            frame.material = kinds[p.kind]->material;
+            frame.placement = p.placement;
+            r.frames_.push_back(std::move(frame));
+            r.kinds_.push_back(p.kind);
         }
     } else {
         kinds.push_back(&r.stone());
-        r.instances_.push_back({kinds[0], 0, s.material, {}});
+        StoneFrame frame;
+        frame.material = s.material;
+        r.frames_.push_back(std::move(frame));
+        r.kinds_.push_back(0);
     }
+    for (StoneFrame& frame : r.frames_) frame.shading = s.shading;
     for (const Stone* kind : kinds) {
         switch (s.method) {
             case Method::table: {
@@ -113,6 +121,7 @@ Result<bool> FrameRenderer::update_ring_cube() {
 
 Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
     setup_.shading.lights = lights;
+    for (StoneFrame& frame : frames_) frame.shading.lights = lights;
     return update_ring_cube();
 }
 
@@ -139,24 +148,32 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     const auto stone_start = Clock::now();
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
-    for (const Instance& instance : instances_) {
-        const StoneFrame frame{instance.stone,   instance.material, camera,
-                               setup_.shading,   &seen,             cube_half_mm_,
-                               scene_radius_mm_, instance.placement};
+    if (setup_.piece != nullptr && !camera.orthographic()) {
+        return Error{"frame renderer: a piece is drawn with an orthographic camera (a "
+                     "perspective eye off a stone's axis is no orbit about it)"};
+    }
+    for (std::size_t i = 0; i < frames_.size(); ++i) {
+        StoneFrame& frame = frames_[i];
+        const std::size_t kind = kinds_[i];
+        // Filled in here: the stone lives in this renderer (or its piece), which may have moved.
+        frame.stone = setup_.piece != nullptr ? &setup_.piece->kinds[kind] : &stone();
+        frame.camera = camera;
+        frame.environment = &seen;
+        frame.cube_half_mm = cube_half_mm_;
+        frame.scene_radius_mm = scene_radius_mm_;
         switch (setup_.method) {
             case Method::table:
                 ok = table_->draw(frame, &stats.table);
                 break;
             case Method::trace:
-                ok = trace_[instance.kind]->draw(frame, setup_.trace, setup_.trace_dispersion);
+                ok = trace_[kind]->draw(frame, setup_.trace, setup_.trace_dispersion);
                 break;
             case Method::phong:
-                ok = phong_[instance.kind]->draw(frame);
+                ok = phong_[kind]->draw(frame);
                 break;
         }
         if (!ok) return Error{ok.error()};
     }
-    if (!ok) return Error{ok.error()};
     if (wait == FrameWait::passes) {
         glFinish();
         stats.stone_ms = ms_since(stone_start);

@@ -1,9 +1,10 @@
 #pragma once
 // One frame of the shading stage, whatever the method: background, stone layer (table,
-// trace or phong), ring, composited with alpha and depth into the bound framebuffer
-// (docs/design.md, "Data flow"). gemrender and the kiosk both draw through it. With a ring, the
-// virtual cube shows the ring around the stone: its six faces are rendered from the stone's
-// centre when the scene around the stone changes (make() and set_lights()), not every frame.
+// trace or phong: a loose stone, or every stone of a piece), ring or the piece's metal,
+// composited with alpha and depth into the bound framebuffer (docs/design.md, "Data flow").
+// gemrender and the kiosk both draw through it. With metal, the virtual cube shows it around
+// the stones: its six faces are rendered from the centre (the loose stone's, the piece's) when
+// the scene changes (make() and set_lights()), not every frame.
 
 #include <memory>
 #include <optional>
@@ -75,7 +76,7 @@ class FrameRenderer {
 
     // The stone (a piece's centre stone).
     const Stone& stone() const;
-    // Radius about the stone's centre that holds the stone and the ring.
+    // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
     TableMethod* table() { return table_.get(); }
@@ -90,14 +91,11 @@ class FrameRenderer {
     std::unique_ptr<BackgroundPass> background_;
     std::unique_ptr<EnvironmentCube> environment_cube_;  // the environment alone
     std::unique_ptr<EnvironmentCube> ring_cube_;         // environment + ring, from the centre
-    // A stone drawn: which kind (its method below) and where.
-    struct Instance {
-        const Stone* stone = nullptr;
-        std::size_t kind = 0;
-        Material material;
-        Placement placement;
-    };
-    std::vector<Instance> instances_;
+    // The stones drawn, each a frame made once (its material, placement and shading; the camera
+    // and cube are filled in per frame, so a frame copies nothing that allocates), and its kind
+    // (the method below).
+    std::vector<StoneFrame> frames_;
+    std::vector<std::size_t> kinds_;
     std::unique_ptr<TableMethod> table_;
     std::vector<std::unique_ptr<TraceMethod>> trace_;  // one per kind of stone
     std::vector<std::unique_ptr<PhongMethod>> phong_;  // one per kind of stone

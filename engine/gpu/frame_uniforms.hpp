@@ -1,6 +1,7 @@
 #pragma once
 // The per-frame inputs every GPU stone method shares, and the uniforms they become in
-// camera.glsl and shading.glsl. Lights and the environment are in the stone frame.
+// camera.glsl and shading.glsl. The camera, lights and cube come in the piece's frame (a loose
+// stone's own) and are moved into the stone's by its placement.
 
 #include "geometry/stone.hpp"
 #include "gpu/environment_cube.hpp"

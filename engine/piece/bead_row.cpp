@@ -62,8 +62,10 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
     const StoneExtent e = stone_extent(stone);
     const double rg = e.girdle_radius;
     const int fit = stones_that_fit(params, rg, circle.radius);
-    if (fit < 3) return Error{"the row's circle is too small for stones " +
-                              std::to_string(2.0 * rg) + " mm wide"};
+    if (fit < 3) {
+        return Error{"count: the row's circle is too small for stones " + std::to_string(2.0 * rg) +
+                     " mm wide"};
+    }
     if (params.count < 0 || params.count > fit) {
         return Error{"count: " + std::to_string(params.count) + " stones do not fit (at most " +
                      std::to_string(fit) + ")"};

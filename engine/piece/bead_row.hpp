@@ -31,12 +31,12 @@ struct BeadRowParams {
 };
 
 // Adds the stones of `kind` (in `piece.kinds`) around `circle`, their walls and beads, to the
-// piece. Returns the number of stones set. Errors: a circle too small for two stones, a count
+// piece. Returns the number of stones set. Errors: a circle too small for three stones, a count
 // that does not fit, a parameter out of range (named).
 Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, std::size_t kind,
                          const std::string& role, Piece& piece);
 
-// The angle between neighbouring stones that `add_bead_row` uses, and how many fit.
+// How many stones of `girdle_radius` fit round a circle of `circle_radius`, gap_mm apart.
 int stones_that_fit(const BeadRowParams& params, double girdle_radius, double circle_radius);
 
 }  // namespace gem

@@ -29,7 +29,7 @@ double claw_width(const ClawParams& params, const Stone& stone);
 
 // Adds the claws of the stone `stones[index]` (placed in the piece) to `metal`, their feet
 // reaching down to `foot_y` in the stone's frame (into whatever carries them), with a gallery
-// rail joining them under the girdle; each tip is recorded as a Hold. Errors name the
+// rail joining them under the culet; each tip is recorded as a Hold. Errors name the
 // parameter: a claw count or width out of range, a tip height that no place on the crown
 // gives.
 Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t index,

@@ -2,8 +2,9 @@
 // A piece of jewellery: its metal and any number of stones, each with its own cut or design,
 // material and placement, in the piece's frame (millimetres; y up through the centre stone's
 // table, the finger along x for a ring). Identical stones are one entry of `kinds` that several
-// placements share, so they are traced, uploaded and built once. The CPU reference, gemrender,
-// the kiosk and catalogues all take a piece as this one description.
+// placements share, so they are traced, uploaded and built once. The CPU reference, gemrender
+// and the GPU's frame renderer take a piece as this one description (the kiosk's catalogue
+// rings are pieces of one stone, made by the solitaire setting).
 
 #include <cstddef>
 #include <string>

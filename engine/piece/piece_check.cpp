@@ -9,18 +9,13 @@
 #include <vector>
 
 #include "piece/seat.hpp"
+#include "render/camera.hpp"
 #include "piece/stone_shape.hpp"
 #include "trace/ray_triangle.hpp"
 
 namespace gem {
 
 namespace {
-
-double radius_of(const Stone& s) {
-    double r = 0.0;
-    for (const glm::dvec3& v : s.vertices) r = std::max(r, glm::length(v));
-    return r;
-}
 
 // Whether an edge of `a` crosses the surface of `b` (b's frame), or a's first vertex lies
 // inside b.
@@ -54,7 +49,7 @@ bool crosses(const Stone& a, const Placement& pa, const Stone& b, const Placemen
 }  // namespace
 
 bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const Placement& pb) {
-    if (glm::length(pa.position - pb.position) > radius_of(a) + radius_of(b)) return false;
+    if (glm::length(pa.position - pb.position) > bounding_radius(a.vertices) + bounding_radius(b.vertices)) return false;
     return crosses(a, pa, b, pb) || crosses(b, pb, a, pa);
 }
 
@@ -76,7 +71,7 @@ Result<bool> check_piece(const Piece& piece) {
     for (std::size_t i = 0; i < piece.stones.size(); ++i) {
         const Stone& stone = piece.stone_of(i);
         const Placement& place = piece.stones[i].placement;
-        const double reach = radius_of(stone) + kHeldMm;
+        const double reach = bounding_radius(stone.vertices) + kHeldMm;
         double nearest = std::numeric_limits<double>::infinity();
         double deepest = 0.0;
         for (const glm::vec3& v : metal.positions) {

@@ -2,7 +2,9 @@
 // A piece checked as a jeweller would before it is shown: no two stones intersect, and every
 // stone is held, with metal touching it (within kHeldMm) and nowhere cutting into it deeper
 // than a setter's seat. A piece from a file that fails gets one message naming the stones by
-// their roles; settings made here pass by construction and are tested to.
+// their roles; settings made here pass by construction and are tested to. The metal is judged
+// by its vertices and the stone's corners: metal that passes through a stone between them (an
+// edge across a facet) is not seen here; the settings' tests cast rays for that.
 
 #include "piece/piece.hpp"
 #include "util/result.hpp"

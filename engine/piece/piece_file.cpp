@@ -2,13 +2,12 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <map>
 #include <optional>
-#include <sstream>
 #include <utility>
 #include <vector>
 
+#include "import/import_text.hpp"
 #include "piece/metal_obj.hpp"
 #include "piece/piece_check.hpp"
 #include "piece/settings.hpp"
@@ -285,15 +284,9 @@ Result<Piece> parse_piece(std::string_view text, const std::string& name,
 }
 
 Result<Piece> load_piece(const std::filesystem::path& path) {
-    std::error_code ec;
-    if (!std::filesystem::is_regular_file(path, ec)) {
-        return Error{"cannot read " + path.string() + ": no such file"};
-    }
-    std::ifstream in(path, std::ios::binary);
-    std::ostringstream text;
-    text << in.rdbuf();
-    if (!in && !in.eof()) return Error{"cannot read " + path.string()};
-    return parse_piece(text.str(), path.string(), path.parent_path());
+    Result<std::string> text = import::read_whole_file(path);
+    if (!text) return Error{text.error()};
+    return parse_piece(text.value(), path.string(), path.parent_path());
 }
 
 }  // namespace gem

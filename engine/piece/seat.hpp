@@ -17,7 +17,8 @@ inline constexpr double kSeatMm = 0.02;
 // Air left between the stone and metal that should not touch it (a gallery, a wall, a floor).
 inline constexpr double kClearanceMm = 0.1;
 
-// The centre of a ball of `radius`, lowered from `above` along `down` (unit; stone frame),
+// The centre of a ball of `radius`, lowered from `above` along `down` (unit, within a few
+// degrees of −y: the stone's frame),
 // where it overlaps the stone by kSeatMm; nothing when the ball is already in the stone at
 // `above` or passes the girdle without meeting it.
 std::optional<glm::dvec3> seat_ball(const Stone& stone, const glm::dvec3& above,

@@ -56,7 +56,7 @@ Result<double> set_centre(const SettingParams& p, Piece& piece) {
 // to it as the centre's are.
 ClawParams scaled_claws(const ClawParams& c, double width, double centre_width) {
     ClawParams s = c;
-    if (c.width_mm != 0.0) s.width_mm = std::max(0.4, c.width_mm * width / centre_width);
+    if (c.width_mm != 0.0) s.width_mm = std::clamp(c.width_mm * width / centre_width, 0.4, 3.0);
     return s;
 }
 
@@ -174,6 +174,8 @@ Result<Piece> make_setting(const SettingParams& params, const std::string& name,
     const bool wants_small = params.kind != SettingKind::solitaire;
     if (wants_centre && !centre) return Error{"centre: a " + std::string(to_string(params.kind)) + " needs a centre stone"};
     if (wants_small && !small) return Error{"small: a " + std::string(to_string(params.kind)) + " needs its small stones"};
+    if (!wants_centre && centre) return Error{"centre: a band has no centre stone"};
+    if (!wants_small && small) return Error{"small: a solitaire has no small stones"};
     Piece piece;
     piece.name = name;
     piece.metal.f0 = metal_f0(params.metal);

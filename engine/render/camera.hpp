@@ -35,8 +35,9 @@ class Camera {
     // The same camera, its rays written in another frame: `rotation` and `position` take that
     // frame's points into this camera's frame (a stone placed in a piece). The picture is the
     // same; the rays start elsewhere and the stone's centre appears shifted. Orthographic
-    // cameras only (a perspective eye off the stone's axis is no orbit about its centre); a
-    // perspective camera comes back unchanged for the identity alone.
+    // cameras only: a perspective camera comes back with its basis turned and its eye where it
+    // was, which is right only when `position` is zero (the frame renderer refuses a piece
+    // seen in perspective).
     Camera in_frame(const glm::dmat3& rotation, const glm::dvec3& position) const;
 
     // The ray through image position (px, py) in pixels: (0, 0) the top-left corner of the

@@ -117,29 +117,37 @@ glm::dvec3 PieceTracer::radiance(const Ray& ray, const std::vector<double>& iors
 }
 
 glm::dvec3 PieceTracer::onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
-                               const glm::dvec3& weight, const std::vector<double>& iors,
-                               int pass, double share, Scratch& scratch) const {
+                               double k, const glm::dvec3& weight,
+                               const std::vector<double>& iors, int pass, double share,
+                               Scratch& scratch) const {
     const double w = std::max({weight.x, weight.y, weight.z}) * share;
-    if (w < kMinShare) return weight * escaped(ray, from_stone, from_normal);
+    if (w < kMinShare) return weight * escaped(ray, from_stone, from_normal, k);
     const Nearest next = nearest(ray, from_stone);
-    if (next.stone < 0 && !next.metal_hit) return weight * escaped(ray, from_stone, from_normal);
+    if (next.stone < 0 && !next.metal_hit) {
+        return weight * escaped(ray, from_stone, from_normal, k);
+    }
     if (pass == 0) return weight * environment_.radiance(ray.direction);
     return weight * follow(ray, next, iors, pass, w, scratch);
 }
 
-// A ray that leaves the piece: the environment, and each light whose lobe it lies in unless
-// the piece stands between (a convex stone's own facet blocks only when it faces away).
-glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone,
-                                const glm::dvec3& from_normal) const {
+// A ray that leaves the piece: the environment, and each light whose lobe it lies in (times
+// `k`, the shading's k_s for a first reflection and k_st for an exit) unless the piece stands
+// between it and the light (a convex stone's own facet blocks only when it faces away), as
+// Shader::light_specular has it for a loose stone.
+glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
+                                double k) const {
     glm::dvec3 sum = environment_.radiance(ray.direction);
+    if (k == 0.0) return sum;
     for (const Light& light : shading_.lights) {
         const glm::dvec3 to_light = direction_to_light(light, ray.origin);
         const double lobe = specular_lobe(ray.direction, to_light, shading_.h);
         if (lobe == 0.0) continue;
         if (from_stone >= 0 && glm::dot(from_normal, to_light) < 0.0) continue;
         const Nearest block = nearest({ray.origin, to_light}, from_stone);
-        if (block.stone >= 0 || block.metal_hit) continue;
-        sum += light.colour * lobe;
+        const double reach = light.directional ? std::numeric_limits<double>::infinity()
+                                               : glm::length(light.position - ray.origin);
+        if ((block.stone >= 0 || block.metal_hit) && block.t < reach) continue;
+        sum += light.colour * (k * lobe);
     }
     return sum;
 }
@@ -166,12 +174,13 @@ glm::dvec3 PieceTracer::follow(const Ray& ray, const Nearest& n,
         return s.placement.direction_to_piece(stone.facets[r.facet].plane.n);
     };
     const TracedRay& r = list.reflected;
-    glm::dvec3 colour = onward(out(r), skip, normal(r), glm::dvec3(r.weight), iors, pass - 1,
-                               share, scratch);
+    glm::dvec3 colour = onward(out(r), skip, normal(r), shading_.k_s, glm::dvec3(r.weight), iors,
+                               pass - 1, share, scratch);
     for (const TracedRay& e : list.exits) {
         const glm::dvec3 weight =
             e.weight * beer_lambert(stone.material.absorption_per_mm, e.path_mm);
-        colour += onward(out(e), skip, normal(e), weight, iors, pass - 1, share, scratch);
+        colour += onward(out(e), skip, normal(e), shading_.k_st, weight, iors, pass - 1, share,
+                         scratch);
     }
     return colour;
 }
@@ -219,8 +228,8 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     const glm::dvec3 fresnel = f0 + (1.0 - f0) * std::pow(1.0 - v_dot_m, 5.0);
     const double g = smith_g1(n_dot_v, alpha) * smith_g1(n_dot_l, alpha);
     const glm::dvec3 weight = fresnel * (g * v_dot_m / (n_dot_v * cos_t));
-    return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), weight, iors, pass - 1,
-                  share, scratch);
+    return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), 1.0, weight, iors,
+                  pass - 1, share, scratch);
 }
 
 }  // namespace gem

@@ -7,6 +7,7 @@
 // the GGX distribution of its roughness (Walter et al. 2007, "Microfacet models for
 // refraction through rough surfaces", eq. 33, 35-36, with Smith's masking). It is the truth a
 // piece's GPU picture is measured against, and what gemrender --piece --method reference draws.
+// Physical shading only (the thesis' model has no meaning for light passing between parts).
 
 #include <cstdint>
 #include <memory>
@@ -52,10 +53,11 @@ class PieceTracer {
     // with `weight` of the pixel's share (escaping, or on to the next part).
     glm::dvec3 follow(const Ray& ray, const Nearest& n, const std::vector<double>& iors, int pass,
                       double share, Scratch& scratch) const;
-    glm::dvec3 onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
+    glm::dvec3 onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal, double k,
                       const glm::dvec3& weight, const std::vector<double>& iors, int pass,
                       double share, Scratch& scratch) const;
-    glm::dvec3 escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal) const;
+    glm::dvec3 escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
+                       double k) const;
     glm::dvec3 metal(const Ray& ray, const SurfaceHit& hit, const std::vector<double>& iors,
                      int pass, double share, Scratch& scratch) const;
 

@@ -46,8 +46,8 @@ struct Wavelength {
 };
 
 // The pixel loop both references share: stratified samples per pixel, each traced at every
-// wavelength by `sample(ray, wavelength index, colour&)`, which says whether the ray met
-// what is drawn (coverage); a miss shows the background.
+// wavelength by `sample(ray, wavelength index, x, y, sample index, scratch, colour&)`, which
+// says whether the ray met what is drawn (coverage); a miss shows the background.
 template <class Scratch, class Sample>
 Image render_pixels(const Camera& camera, const Environment& environment,
                     const RenderSettings& settings, const std::vector<Wavelength>& wavelengths,
@@ -155,6 +155,9 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
 Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
                                      const RenderSettings& settings, RenderStats* stats) {
     const auto start = std::chrono::steady_clock::now();
+    if (settings.shading.model != ShadingModel::physical) {
+        return Error{"a piece is shaded physically (the thesis' model is for one stone)"};
+    }
     std::vector<const Material*> materials;
     for (const Stone& kind : piece.kinds) materials.push_back(&kind.material);
     auto wavelengths = wavelengths_for(settings, materials);

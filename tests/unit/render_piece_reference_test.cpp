@@ -28,6 +28,8 @@ RenderSettings small_picture() {
     s.camera.elevation_deg = 40.0;
     s.camera.azimuth_deg = 13.0;
     s.shading.lights = {Light{{20.0, 60.0, 30.0}, false, glm::dvec3(2.0)}};
+    s.shading.k_s = 0.7;  // the first reflection's and the exits' lights weighed apart
+    s.shading.k_st = 1.3;
     return s;
 }
 

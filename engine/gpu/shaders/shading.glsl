@@ -40,9 +40,8 @@ ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
 
 // Where the ray from p along d (stone frame) meets the virtual cube, as a cube-map lookup
 // direction: the six images were taken from the piece's centre, so the exit point matters,
-// not only d. The
-// sharp level always: neighbouring pixels' rays diverge inside a stone, and a level chosen
-// from their derivatives would blur the sparkle.
+// not only d. The sharp level always: neighbouring pixels' rays diverge inside a stone, and a
+// level chosen from their derivatives would blur the sparkle.
 vec3 environment(vec3 p_stone, vec3 d_stone) {
     vec3 d = u_frame_rotation * d_stone;
 #ifdef CUBE_AT_INFINITY
