@@ -272,14 +272,9 @@ class PieceReader {
 
 Result<Piece> parse_piece(std::string_view text, const std::string& name,
                           const std::filesystem::path& base) {
-    toml::table doc;
-    try {
-        doc = toml::parse(text, name);
-    } catch (const toml::parse_error& err) {
-        return Error{name + ":" + std::to_string(err.source().begin.line) + ":" +
-                     std::to_string(err.source().begin.column) + ": " +
-                     std::string(err.description())};
-    }
+    Result<toml::table> parsed = parse_toml(text, name);
+    if (!parsed) return Error{parsed.error()};
+    const toml::table& doc = parsed.value();
     return PieceReader(name, base).read(doc);
 }
 

@@ -297,13 +297,9 @@ Problem read_document(const Reader& r, const toml::table& doc, Scene& scene) {
 
 Result<Scene> parse_scene(std::string_view text, const std::string& name,
                           const std::filesystem::path& base) {
-    toml::table doc;
-    try {
-        doc = toml::parse(text, name);
-    } catch (const toml::parse_error& err) {
-        return Error{name + ":" + std::to_string(err.source().begin.line) + ": " +
-                     std::string(err.description())};
-    }
+    Result<toml::table> parsed = parse_toml(text, name);
+    if (!parsed) return Error{parsed.error()};
+    const toml::table& doc = parsed.value();
     Scene scene = default_scene();
     // A file's lights replace the default ones rather than adding to them.
     if (doc.contains("light")) scene.lights.clear();

@@ -7,6 +7,7 @@
 
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
+#include "scene/toml_reader.hpp"
 
 namespace gem {
 
@@ -15,13 +16,9 @@ namespace {
 // A stone file is a scene file cut down to what a database depends on: the camera, lights
 // and environment are chosen at shading time, so a stone file that sets them is a mistake.
 Result<bool> check_tables(const std::string& text, const std::string& name) {
-    toml::table doc;
-    try {
-        doc = toml::parse(text, name);
-    } catch (const toml::parse_error& err) {
-        return Error{name + ":" + std::to_string(err.source().begin.line) + ": " +
-                     std::string(err.description())};
-    }
+    Result<toml::table> parsed = parse_toml(text, name);
+    if (!parsed) return Error{parsed.error()};
+    const toml::table& doc = parsed.value();
     for (auto&& [key, node] : doc) {
         if (key.str() == "stone" || key.str() == "material") continue;
         return Error{name + ":" + std::to_string(key.source().begin.line) + ": " +

@@ -18,6 +18,16 @@
 
 namespace gem {
 
+// The document, or "name:line: what toml++ found wrong".
+inline Result<toml::table> parse_toml(std::string_view text, const std::string& name) {
+    try {
+        return toml::parse(text, name);
+    } catch (const toml::parse_error& err) {
+        return Error{name + ":" + std::to_string(err.source().begin.line) + ": " +
+                     std::string(err.description())};
+    }
+}
+
 class Reader {
   public:
     Reader(std::string name, std::filesystem::path base)
