@@ -1,5 +1,5 @@
-// gemrender: renders a stone or a piece to a PNG, with the exact CPU tracer (--method reference, the
-// default; optionally also a linear PFM) or headless on the GPU through EGL (--method table,
+// gemrender: renders a stone or a piece to a PNG, with the exact CPU tracer (--method reference,
+// the default; optionally also a linear PFM) or headless on the GPU through EGL (--method table,
 // trace or phong; gpu_render.hpp). Options override the scene file; with no arguments at all
 // it renders the built-in default scene to out/gemrender-default.png.
 #include <cstdio>
@@ -156,7 +156,8 @@ int main(int argc, char** argv) {
     app.add_flag("--spectral", o.spectral, "trace wavelength samples (dispersion)");
     app.add_option("--out", o.out, "PNG to write (8-bit sRGB)");
     app.add_option("--linear", o.linear, "also write linear float colour as PFM (reference)");
-    app.add_option("--piece", o.piece, "a piece description (config/pieces/README.md) instead of a stone")
+    app.add_option("--piece", o.piece,
+                   "a piece description (config/pieces/README.md) instead of a stone")
         ->check(CLI::ExistingFile);
     app.add_option("--method", o.method, "reference (CPU, exact), table, trace or phong (GPU)")
         ->check(CLI::IsMember({"reference", "table", "trace", "phong"}));

@@ -4,8 +4,8 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
-#include <optional>
 #include <numbers>
+#include <optional>
 #include <vector>
 
 #include "gpu/egl_context.hpp"
@@ -13,9 +13,9 @@
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_mesh.hpp"
-#include "piece/metal_obj.hpp"
 #include "optics/material.hpp"
 #include "piece/metal.hpp"
+#include "piece/metal_obj.hpp"
 #include "render/image.hpp"
 #include "scene/scene_build.hpp"
 

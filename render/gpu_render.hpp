@@ -18,15 +18,15 @@ struct GpuRenderOptions {
     std::string fire = "none";  // trace: dispersion "none", "first" (first order) or "exact"
     std::string ring;           // "", "parametric" or an OBJ file
     std::string metal = "yellow_gold";
-    int frames = 1;            // > 1: a turntable sequence
-    double turn_deg = 0.0;     // azimuth step per frame; 0: 360 / frames
-    std::string frames_dir;    // where every frame goes as frame-NNNN.png (optional)
-    std::string out;           // the (last) image
-    DisplayTransform display;  // exposure and tone curve, as the CPU reference's PNG gets
-    int msaa = 4;              // samples per pixel of the rasterised stone and ring
-    double glare = 0.0;        // glare share (the kiosk's bloom); 0 compares with the CPU
-    int still_frames = 1;      // one picture: frames a sub-pixel apart averaged, as a still
-                               // kiosk view is
+    int frames = 1;                // > 1: a turntable sequence
+    double turn_deg = 0.0;         // azimuth step per frame; 0: 360 / frames
+    std::string frames_dir;        // where every frame goes as frame-NNNN.png (optional)
+    std::string out;               // the (last) image
+    DisplayTransform display;      // exposure and tone curve, as the CPU reference's PNG gets
+    int msaa = 4;                  // samples per pixel of the rasterised stone and ring
+    double glare = 0.0;            // glare share (the kiosk's bloom); 0 compares with the CPU
+    int still_frames = 1;          // one picture: frames a sub-pixel apart averaged, as a still
+                                   // kiosk view is
     const Piece* piece = nullptr;  // trace, phong: the piece instead of the scene's stone and a
                                    // ring, framed by its bounding sphere as the CPU frames it
 };

@@ -50,8 +50,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     std::vector<const Stone*> kinds;
     if (s.piece != nullptr) {
         if (s.method == Method::table) {
-            return Error{"frame renderer: a piece is drawn by trace or phong (a database holds "
-                         "one loose stone)"};
+            return Error{
+                "frame renderer: a piece is drawn by trace or phong (a database holds "
+                "one loose stone)"};
         }
         if (s.piece->stones.empty()) return Error{"frame renderer: the piece has no stones"};
         for (const Stone& kind : s.piece->kinds) kinds.push_back(&kind);
@@ -93,8 +94,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         }
     }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
-    r.scene_radius_mm_ =
-        (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
+    r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
     const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;
     if (metal != nullptr && !metal->indices.empty()) {
         auto ring = RingRenderer::make(*metal);
@@ -149,8 +149,9 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
     if (setup_.piece != nullptr && !camera.orthographic()) {
-        return Error{"frame renderer: a piece is drawn with an orthographic camera (a "
-                     "perspective eye off a stone's axis is no orbit about it)"};
+        return Error{
+            "frame renderer: a piece is drawn with an orthographic camera (a "
+            "perspective eye off a stone's axis is no orbit about it)"};
     }
     for (std::size_t i = 0; i < frames_.size(); ++i) {
         StoneFrame& frame = frames_[i];

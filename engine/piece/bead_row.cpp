@@ -74,9 +74,10 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
     const std::size_t first = piece.stones.size();
     for (int k = 0; k < n; ++k) {
         const RowFrame f = frame_at(circle, 2.0 * kPi * k / n);
-        piece.stones.push_back({kind,
-                                {frame_from_up(f.up, f.tangent), circle.centre + circle.radius * f.radial},
-                                role + " " + std::to_string(k + 1)});
+        piece.stones.push_back(
+            {kind,
+             {frame_from_up(f.up, f.tangent), circle.centre + circle.radius * f.radial},
+             role + " " + std::to_string(k + 1)});
     }
 
     // Walls beside the stones from the floor to the top of the girdle, and the floor under
@@ -113,12 +114,12 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
         const glm::dvec2 nearest = glm::dvec2(gap_in_stone.x, gap_in_stone.z) -
                                    along * glm::dvec2(side_in_stone.x, side_in_stone.z);
         const double reach = rg + kReach * bead;
-        const double half = std::sqrt(std::max(reach * reach - glm::dot(nearest, nearest),
-                                               0.0625 * rg * rg));
+        const double half =
+            std::sqrt(std::max(reach * reach - glm::dot(nearest, nearest), 0.0625 * rg * rg));
         for (const double sign : {-1.0, 1.0}) {
             const double across = -along + sign * half;
-            const glm::dvec3 above = centre_of_gap + across * f.side +
-                                     (e.table_y + 2.0 * bead + 1.0) * f.up;
+            const glm::dvec3 above =
+                centre_of_gap + across * f.side + (e.table_y + 2.0 * bead + 1.0) * f.up;
             const std::optional<glm::dvec3> seated =
                 seat_ball(stone, left.placement.to_stone(above),
                           left.placement.direction_to_stone(-f.up), bead);
@@ -132,7 +133,8 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
             // The stalk meets the wall a little above its top, so that it passes over the
             // girdles' corners on its way.
             const double stalk = 0.45 * bead;
-            const glm::dvec3 wall_top = centre_of_gap + (across > 0.0 ? 1.0 : -1.0) * wall_z * f.side +
+            const glm::dvec3 wall_top = centre_of_gap +
+                                        (across > 0.0 ? 1.0 : -1.0) * wall_z * f.side +
                                         (e.girdle_top + stalk) * f.up;
             b.cylinder(c, wall_top, stalk, f.tangent, 8);
             b.sphere(wall_top, stalk, 6, 8);

@@ -19,15 +19,15 @@ struct RowCircle {
     glm::dvec3 centre{0.0};
     glm::dvec3 e0{1.0, 0.0, 0.0};  // the circle's plane: unit, perpendicular
     glm::dvec3 e1{0.0, 0.0, -1.0};
-    double radius = 5.0;           // of the stones' girdle centres
+    double radius = 5.0;            // of the stones' girdle centres
     bool tables_along_axis = true;  // true: tables face e0 × e1; false: away from the centre
 };
 
 struct BeadRowParams {
-    double gap_mm = 0.15;       // between neighbouring girdles, at the girdle circle
-    double bead_pct = 20.0;     // bead radius as a share of the stone's width
-    double wall_mm = 0.3;       // wall thickness
-    int count = 0;              // stones in the full circle; 0: as many as fit
+    double gap_mm = 0.15;    // between neighbouring girdles, at the girdle circle
+    double bead_pct = 20.0;  // bead radius as a share of the stone's width
+    double wall_mm = 0.3;    // wall thickness
+    int count = 0;           // stones in the full circle; 0: as many as fit
 };
 
 // Adds the stones of `kind` (in `piece.kinds`) around `circle`, their walls and beads, to the

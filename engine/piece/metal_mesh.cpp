@@ -44,8 +44,8 @@ void MeshBuilder::quad(std::uint32_t a, std::uint32_t b, std::uint32_t c, std::u
     triangle(a, c, d);
 }
 
-void MeshBuilder::torus(const glm::dvec3& c, const glm::dvec3& e0, const glm::dvec3& e1,
-                        double r, double radial, double axial, int segments, int profile) {
+void MeshBuilder::torus(const glm::dvec3& c, const glm::dvec3& e0, const glm::dvec3& e1, double r,
+                        double radial, double axial, int segments, int profile) {
     const glm::dvec3 axis = glm::cross(e0, e1);
     std::vector<std::uint32_t> ids;
     for (int i = 0; i < segments; ++i) {
@@ -64,7 +64,8 @@ void MeshBuilder::torus(const glm::dvec3& c, const glm::dvec3& e0, const glm::dv
         return ids[static_cast<std::size_t>((i % segments) * profile + (j % profile))];
     };
     for (int i = 0; i < segments; ++i) {
-        for (int j = 0; j < profile; ++j) quad(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
+        for (int j = 0; j < profile; ++j)
+            quad(at(i, j), at(i + 1, j), at(i + 1, j + 1), at(i, j + 1));
     }
 }
 

@@ -11,8 +11,7 @@
 
 namespace gem {
 
-Result<MetalMesh> load_metal_obj(const std::filesystem::path& path, Metal metal,
-                                double roughness) {
+Result<MetalMesh> load_metal_obj(const std::filesystem::path& path, Metal metal, double roughness) {
     if (!(roughness >= 0.0 && roughness <= 1.0)) {
         return Error{path.string() + ": roughness must be 0..1"};
     }

@@ -24,7 +24,7 @@ struct PieceStone {
 
 // A claw tip or a bead: a ball of metal that bears on one stone's crown and holds it.
 struct Hold {
-    std::size_t stone = 0;  // index into Piece::stones
+    std::size_t stone = 0;   // index into Piece::stones
     glm::dvec3 centre{0.0};  // piece frame
     double radius = 0.0;
 };

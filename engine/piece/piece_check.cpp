@@ -9,8 +9,8 @@
 #include <vector>
 
 #include "piece/seat.hpp"
-#include "render/camera.hpp"
 #include "piece/stone_shape.hpp"
+#include "render/camera.hpp"
 #include "trace/ray_triangle.hpp"
 
 namespace gem {
@@ -49,7 +49,9 @@ bool crosses(const Stone& a, const Placement& pa, const Stone& b, const Placemen
 }  // namespace
 
 bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const Placement& pb) {
-    if (glm::length(pa.position - pb.position) > bounding_radius(a.vertices) + bounding_radius(b.vertices)) return false;
+    if (glm::length(pa.position - pb.position) >
+        bounding_radius(a.vertices) + bounding_radius(b.vertices))
+        return false;
     return crosses(a, pa, b, pb) || crosses(b, pb, a, pa);
 }
 
@@ -93,8 +95,8 @@ Result<bool> check_piece(const Piece& piece) {
             const glm::dvec3 b = place.to_stone(glm::dvec3(metal.positions[metal.indices[t + 1]]));
             const glm::dvec3 c = place.to_stone(glm::dvec3(metal.positions[metal.indices[t + 2]]));
             const glm::dvec3 mid = (a + b + c) / 3.0;
-            const double size = std::max({glm::length(a - mid), glm::length(b - mid),
-                                          glm::length(c - mid)});
+            const double size =
+                std::max({glm::length(a - mid), glm::length(b - mid), glm::length(c - mid)});
             if (glm::length(mid) > reach + size) continue;
             glm::dvec3 n = glm::cross(b - a, c - a);
             const glm::dvec3 normals = place.direction_to_stone(

@@ -60,8 +60,9 @@ class PieceReader {
             } else if (k == "setting") {
                 e = r_.string(node, full, setting_);
                 if (!e && setting_ != "free" && !parse_setting_kind(setting_)) {
-                    e = r_.error(node, full, "unknown setting '" + setting_ +
-                                                 "' (solitaire, halo, three-stone, band, free)");
+                    e = r_.error(node, full,
+                                 "unknown setting '" + setting_ +
+                                     "' (solitaire, halo, three-stone, band, free)");
                 }
             } else if (k == "metal") {
                 std::string text;
@@ -69,7 +70,8 @@ class PieceReader {
                 if (!e) {
                     const std::optional<Metal> metal = parse_metal(text);
                     if (!metal) {
-                        e = r_.error(node, full, "unknown metal '" + text + "' (" + kMetalNames + ")");
+                        e = r_.error(node, full,
+                                     "unknown metal '" + text + "' (" + kMetalNames + ")");
                     } else {
                         params_.metal = *metal;
                     }
@@ -161,7 +163,8 @@ class PieceReader {
             if (!stone) return Error{stone.error()};
             stones[i] = std::move(stone).value();
         }
-        if (doc["stone"]) return Error{name_ + ": [[stone]] is for free pieces (setting = \"free\")"};
+        if (doc["stone"])
+            return Error{name_ + ": [[stone]] is for free pieces (setting = \"free\")"};
         Result<Piece> made = make_setting(params_, name_value_, stones[0], stones[1]);
         if (!made) return setting_error(made.error());
         return made;
@@ -172,7 +175,8 @@ class PieceReader {
         if (table == "centre") {
             if (k == "claws") return r_.integer(node, full, 2, 12, params_.claws.claws);
             if (k == "claw_width_mm") return r_.number(node, full, params_.claws.width_mm);
-            if (k == "claw_tip_height_pct") return r_.number(node, full, params_.claws.tip_height_pct);
+            if (k == "claw_tip_height_pct")
+                return r_.number(node, full, params_.claws.tip_height_pct);
         } else {
             if (k == "count") return r_.integer(node, full, 0, 1000, params_.row.count);
             if (k == "gap_mm") return r_.number(node, full, params_.row.gap_mm);
@@ -205,7 +209,8 @@ class PieceReader {
 
     Result<Piece> read_free(const toml::table& doc) {
         if (doc["centre"] || doc["small"]) {
-            return Error{name_ + ": [centre] and [small] are for settings; a free piece lists [[stone]]"};
+            return Error{name_ +
+                         ": [centre] and [small] are for settings; a free piece lists [[stone]]"};
         }
         if (metal_model_.empty()) return Error{name_ + ": piece.metal_model: missing"};
         Piece piece;
@@ -214,7 +219,8 @@ class PieceReader {
         if (!metal) return r_.error_at(metal_model_line_, "piece.metal_model", metal.error());
         piece.metal = std::move(metal).value();
         const toml::array* list = doc["stone"].as_array();
-        if (list == nullptr || list->empty()) return Error{name_ + ": no [[stone]] in a free piece"};
+        if (list == nullptr || list->empty())
+            return Error{name_ + ": no [[stone]] in a free piece"};
         for (std::size_t i = 0; i < list->size(); ++i) {
             const toml::table* t = (*list)[i].as_table();
             const std::string table = "stone[" + std::to_string(i + 1) + "]";

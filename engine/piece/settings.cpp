@@ -73,10 +73,9 @@ Result<bool> make_three_stone(const SettingParams& p, Piece& piece) {
     const glm::dvec3 axis_centre(0.0, shank_y.value(), 0.0);
     const double reach = -shank_y.value();
     const double shank_outer = 0.5 * p.shank.finger_diameter_mm + p.shank.thickness_mm;
-    const double apart = c.girdle_radius + s.girdle_radius +
-                         0.5 * (claw_width(p.claws, piece.kinds[0]) +
-                                claw_width(side, piece.kinds[1])) +
-                         0.3;
+    const double apart =
+        c.girdle_radius + s.girdle_radius +
+        0.5 * (claw_width(p.claws, piece.kinds[0]) + claw_width(side, piece.kinds[1])) + 0.3;
     double lo = 0.0, hi = 0.5 * kPi;
     for (int i = 0; i < 60; ++i) {
         const double mid = 0.5 * (lo + hi);
@@ -88,9 +87,9 @@ Result<bool> make_three_stone(const SettingParams& p, Piece& piece) {
         const Placement place{frame_from_up(up, {1.0, 0.0, 0.0}), axis_centre + reach * up};
         const std::size_t index = piece.stones.size();
         piece.stones.push_back({1, place, sign > 0 ? "side 1" : "side 2"});
-        auto claws = add_claws(side, piece.kinds[1], index, place,
-                               shank_outer - reach - 0.4 * p.shank.thickness_mm, piece.metal,
-                               piece.holds);
+        auto claws =
+            add_claws(side, piece.kinds[1], index, place,
+                      shank_outer - reach - 0.4 * p.shank.thickness_mm, piece.metal, piece.holds);
         if (!claws) return Error{claws.error()};
     }
     return true;
@@ -142,9 +141,9 @@ Result<bool> make_band(const SettingParams& p, Piece& piece) {
     auto set = add_bead_row(p.row, circle, 0, "band", piece);
     if (!set) return Error{set.error()};
     const double width = 2.0 * (s.girdle_radius + kClearanceMm + p.row.wall_mm);
-    MeshBuilder(piece.metal).torus(circle.centre, {0, 1, 0}, {0, 0, 1},
-                                   inner + 0.5 * p.shank.thickness_mm, 0.5 * p.shank.thickness_mm,
-                                   0.5 * std::max(width, p.shank.width_mm), 192, 16);
+    MeshBuilder(piece.metal)
+        .torus(circle.centre, {0, 1, 0}, {0, 0, 1}, inner + 0.5 * p.shank.thickness_mm,
+               0.5 * p.shank.thickness_mm, 0.5 * std::max(width, p.shank.width_mm), 192, 16);
     return true;
 }
 
@@ -172,8 +171,10 @@ Result<Piece> make_setting(const SettingParams& params, const std::string& name,
     }
     const bool wants_centre = params.kind != SettingKind::band;
     const bool wants_small = params.kind != SettingKind::solitaire;
-    if (wants_centre && !centre) return Error{"centre: a " + std::string(to_string(params.kind)) + " needs a centre stone"};
-    if (wants_small && !small) return Error{"small: a " + std::string(to_string(params.kind)) + " needs its small stones"};
+    if (wants_centre && !centre)
+        return Error{"centre: a " + std::string(to_string(params.kind)) + " needs a centre stone"};
+    if (wants_small && !small)
+        return Error{"small: a " + std::string(to_string(params.kind)) + " needs its small stones"};
     if (!wants_centre && centre) return Error{"centre: a band has no centre stone"};
     if (!wants_small && small) return Error{"small: a solitaire has no small stones"};
     Piece piece;

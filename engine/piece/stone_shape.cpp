@@ -110,8 +110,8 @@ glm::dvec3 closest_point(const Stone& stone, const glm::dvec3& p) {
     double d2 = std::numeric_limits<double>::infinity();
     glm::dvec3 best = p;
     for (const MeshTriangle& t : stone.triangles) {
-        const glm::dvec3 q = closest_on_triangle(p, stone.vertices[t.v[0]],
-                                                 stone.vertices[t.v[1]], stone.vertices[t.v[2]]);
+        const glm::dvec3 q = closest_on_triangle(p, stone.vertices[t.v[0]], stone.vertices[t.v[1]],
+                                                 stone.vertices[t.v[2]]);
         if (const double e = glm::dot(p - q, p - q); e < d2) {
             d2 = e;
             best = q;

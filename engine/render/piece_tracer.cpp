@@ -107,8 +107,8 @@ PieceTracer::Nearest PieceTracer::nearest(const Ray& ray, int skip_stone) const 
     return n;
 }
 
-glm::dvec3 PieceTracer::radiance(const Ray& ray, const std::vector<double>& iors,
-                                 Scratch& scratch, bool* hit) const {
+glm::dvec3 PieceTracer::radiance(const Ray& ray, const std::vector<double>& iors, Scratch& scratch,
+                                 bool* hit) const {
     const Nearest n = nearest(ray, -1);
     if (hit != nullptr) *hit = n.stone >= 0 || n.metal_hit;
     // A ray straight from the eye that meets nothing sees the surroundings, not the lights.
@@ -117,9 +117,8 @@ glm::dvec3 PieceTracer::radiance(const Ray& ray, const std::vector<double>& iors
 }
 
 glm::dvec3 PieceTracer::onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
-                               double k, const glm::dvec3& weight,
-                               const std::vector<double>& iors, int pass, double share,
-                               Scratch& scratch) const {
+                               double k, const glm::dvec3& weight, const std::vector<double>& iors,
+                               int pass, double share, Scratch& scratch) const {
     const double w = std::max({weight.x, weight.y, weight.z}) * share;
     if (w < kMinShare) return weight * escaped(ray, from_stone, from_normal, k);
     const Nearest next = nearest(ray, from_stone);
@@ -152,17 +151,16 @@ glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3
     return sum;
 }
 
-glm::dvec3 PieceTracer::follow(const Ray& ray, const Nearest& n,
-                               const std::vector<double>& iors, int pass, double share,
-                               Scratch& scratch) const {
+glm::dvec3 PieceTracer::follow(const Ray& ray, const Nearest& n, const std::vector<double>& iors,
+                               int pass, double share, Scratch& scratch) const {
     if (n.metal_hit) return metal(ray, n.metal, iors, pass, share, scratch);
     const PieceStone& s = piece_.stones[static_cast<std::size_t>(n.stone)];
     const Stone& stone = piece_.kinds[s.kind];
     // Each pass has its own list: the passes below it use theirs while this one is read.
     RayList& list = scratch.lists[static_cast<std::size_t>(pass)];
-    tracers_[s.kind].trace({s.placement.to_stone(ray.origin),
-                            s.placement.direction_to_stone(ray.direction)},
-                           iors[s.kind], trace_, list);
+    tracers_[s.kind].trace(
+        {s.placement.to_stone(ray.origin), s.placement.direction_to_stone(ray.direction)},
+        iors[s.kind], trace_, list);
     if (!list.hit) return environment_.radiance(ray.direction);  // grazing: the tracer missed
     // A convex stone cannot be met again by a ray that has left it.
     const int skip = stone.convex ? n.stone : -1;
@@ -179,8 +177,8 @@ glm::dvec3 PieceTracer::follow(const Ray& ray, const Nearest& n,
     for (const TracedRay& e : list.exits) {
         const glm::dvec3 weight =
             e.weight * beer_lambert(stone.material.absorption_per_mm, e.path_mm);
-        colour += onward(out(e), skip, normal(e), shading_.k_st, weight, iors, pass - 1, share,
-                         scratch);
+        colour +=
+            onward(out(e), skip, normal(e), shading_.k_st, weight, iors, pass - 1, share, scratch);
     }
     return colour;
 }
@@ -212,12 +210,11 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     const double u1 = uniform(scratch.random), u2 = uniform(scratch.random);
     const double tan2 = alpha * alpha * u1 / std::max(1.0 - u1, 1e-12);
     const double cos_t = 1.0 / std::sqrt(1.0 + tan2), sin_t = std::sqrt(1.0 - cos_t * cos_t);
-    const glm::dvec3 tx = glm::normalize(std::abs(n.x) < 0.9 ? glm::cross(n, {1, 0, 0})
-                                                             : glm::cross(n, {0, 1, 0}));
+    const glm::dvec3 tx =
+        glm::normalize(std::abs(n.x) < 0.9 ? glm::cross(n, {1, 0, 0}) : glm::cross(n, {0, 1, 0}));
     const glm::dvec3 ty = glm::cross(n, tx);
     const double phi = 2.0 * kPi * u2;
-    const glm::dvec3 m =
-        sin_t * std::cos(phi) * tx + sin_t * std::sin(phi) * ty + cos_t * n;
+    const glm::dvec3 m = sin_t * std::cos(phi) * tx + sin_t * std::sin(phi) * ty + cos_t * n;
     const double v_dot_m = glm::dot(v, m);
     if (v_dot_m <= 0.0) return glm::dvec3(0.0);
     const glm::dvec3 l = 2.0 * v_dot_m * m - v;

@@ -30,8 +30,8 @@ class PieceTracer {
     static constexpr double kMinShare = 1e-3;
 
     // Keeps references: the piece, environment and settings must outlive the tracer.
-    PieceTracer(const Piece& piece, const Environment& environment,
-                const ShadingSettings& shading, const TraceSettings& trace);
+    PieceTracer(const Piece& piece, const Environment& environment, const ShadingSettings& shading,
+                const TraceSettings& trace);
     ~PieceTracer();
 
     // One state per thread and sample: the ray-lists of every pass and the random stream that
@@ -65,10 +65,10 @@ class PieceTracer {
     const Environment& environment_;
     const ShadingSettings& shading_;
     const TraceSettings& trace_;
-    std::vector<Tracer> tracers_;                           // one per kind
-    std::vector<std::unique_ptr<Intersector>> entries_;     // one per kind
-    std::vector<double> radii_;                             // one per kind
-    Stone metal_solid_;                                     // the metal's triangles
+    std::vector<Tracer> tracers_;                        // one per kind
+    std::vector<std::unique_ptr<Intersector>> entries_;  // one per kind
+    std::vector<double> radii_;                          // one per kind
+    Stone metal_solid_;                                  // the metal's triangles
     std::unique_ptr<Intersector> metal_;
 };
 

@@ -117,8 +117,7 @@ Result<std::vector<Wavelength>> wavelengths_for(const RenderSettings& settings,
     return out;
 }
 
-void record(RenderStats* stats, std::uint64_t rays,
-            std::chrono::steady_clock::time_point start) {
+void record(RenderStats* stats, std::uint64_t rays, std::chrono::steady_clock::time_point start) {
     if (stats == nullptr) return;
     stats->pixel_rays = rays;
     stats->seconds =

@@ -45,7 +45,6 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
 // The same for a whole piece (render/piece_tracer.hpp): every stone, the metal and what passes
 // between them; the camera orbits the piece's origin and frames its bounding sphere.
 Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
-                                     const RenderSettings& settings,
-                                     RenderStats* stats = nullptr);
+                                     const RenderSettings& settings, RenderStats* stats = nullptr);
 
 }  // namespace gem

@@ -1,7 +1,8 @@
 #pragma once
-// A stone description, as gemtables builds from and catalogues and pieces name: a small TOML file with a [stone] table (a cut
-// and its proportions, or a model file) and a [material] table, read with the engine's scene
-// reader so the keys mean exactly what they mean in a scene (config/stones/README.md).
+// A stone description, as gemtables builds from and catalogues and pieces name: a small TOML file
+// with a [stone] table (a cut and its proportions, or a model file) and a [material] table, read
+// with the engine's scene reader so the keys mean exactly what they mean in a scene
+// (config/stones/README.md).
 
 #include <filesystem>
 

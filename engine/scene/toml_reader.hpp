@@ -11,8 +11,8 @@
 #include <string>
 #include <string_view>
 
-#include <glm/glm.hpp>
 #include <toml++/toml.h>
+#include <glm/glm.hpp>
 
 #include "util/result.hpp"
 

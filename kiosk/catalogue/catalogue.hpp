@@ -49,7 +49,7 @@ struct CatalogueStone {
     std::filesystem::path design;           // absolute, inside the catalogue directory
     std::shared_ptr<const Stone> designed;  // the stone validation built from it
     RingKind ring = RingKind::parametric;
-    std::filesystem::path ring_obj;                  // RingKind::obj: absolute path
+    std::filesystem::path ring_obj;              // RingKind::obj: absolute path
     std::shared_ptr<const MetalMesh> ring_mesh;  // RingKind::obj: the mesh loaded
     gpu::RingParams::Metal metal = gpu::RingParams::Metal::yellow_gold;
     // Shading-time material overrides (the database records the defaults).

@@ -89,8 +89,8 @@ struct Case {
     TraceDispersion dispersion = TraceDispersion::none;
 };
 
-gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r,
-                       const gem::MetalMesh& ring, const gem::Stone& stone, int frame) {
+gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const gem::MetalMesh& ring,
+                       const gem::Stone& stone, int frame) {
     if (v.ring) {
         const std::vector<glm::dvec3> points(ring.positions.begin(), ring.positions.end());
         const gem::kiosk::Framing framing =

@@ -134,9 +134,10 @@ TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     const double centre = psnr_over(centre_alone, gpu);
     const double small = psnr_over(small_alone, gpu);
     const double small_missing = psnr_over(small_alone, bare);
-    std::printf("halo ring, GPU trace against the CPU reference: centre stone %.1f dB, small "
-                "stones %.1f dB (%.1f dB drawn without them)\n",
-                centre, small, small_missing);
+    std::printf(
+        "halo ring, GPU trace against the CPU reference: centre stone %.1f dB, small "
+        "stones %.1f dB (%.1f dB drawn without them)\n",
+        centre, small, small_missing);
     if (small < small_missing + 1.0) {
         gpu_test::write_artifact(gpu, "piece_halo_gpu");
         gpu_test::write_artifact(reference.value(), "piece_halo_reference");

@@ -15,10 +15,10 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_renderer.hpp"
-#include "piece/metal_obj.hpp"
-#include "piece/seat.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
+#include "piece/metal_obj.hpp"
+#include "piece/seat.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem {

@@ -50,10 +50,10 @@ TEST(PieceFile, TheSamplesLoadAsTheirSettings) {
     ASSERT_TRUE(band) << band.error();
     EXPECT_GE(band.value().stones.size(), 30u);
     EXPECT_EQ(band.value().kinds.size(), 1u);
-    EXPECT_EQ(describe(band.value()).rfind("piece Diamond eternity band: " +
-                                               std::to_string(band.value().stones.size()) +
-                                               " stones (1 distinct), ",
-                                           0),
+    EXPECT_EQ(describe(band.value())
+                  .rfind("piece Diamond eternity band: " +
+                             std::to_string(band.value().stones.size()) + " stones (1 distinct), ",
+                         0),
               0u)
         << describe(band.value());
 }
@@ -135,19 +135,20 @@ class FreePiece : public ::testing::Test {
         // width, from the pavilion angle: 1 mm × tan 40.75°).
         std::ofstream obj(dir_ / "plate.obj");
         const double top = -std::tan(40.75 * 3.14159265358979323846 / 180.0);
-        obj << "v -5 " << top - 1 << " -5\nv 5 " << top - 1 << " -5\nv 5 " << top - 1
-            << " 5\nv -5 " << top - 1 << " 5\n"
+        obj << "v -5 " << top - 1 << " -5\nv 5 " << top - 1 << " -5\nv 5 " << top - 1 << " 5\nv -5 "
+            << top - 1 << " 5\n"
             << "v -5 " << top << " -5\nv 5 " << top << " -5\nv 5 " << top << " 5\nv -5 " << top
             << " 5\n"
             << "f 1 2 3 4\nf 8 7 6 5\nf 1 5 6 2\nf 2 6 7 3\nf 3 7 8 4\nf 4 8 5 1\n";
     }
     Result<Piece> free_piece(const std::string& second_position) {
-        const std::string text = "[piece]\nname = \"free\"\nsetting = \"free\"\n"
-                                 "metal_model = \"plate.obj\"\n"
-                                 "[[stone]]\nstone = \"small.toml\"\n"
-                                 "[[stone]]\nstone = \"small.toml\"\nrole = \"left\"\n"
-                                 "position_mm = " +
-                                 second_position + "\n";
+        const std::string text =
+            "[piece]\nname = \"free\"\nsetting = \"free\"\n"
+            "metal_model = \"plate.obj\"\n"
+            "[[stone]]\nstone = \"small.toml\"\n"
+            "[[stone]]\nstone = \"small.toml\"\nrole = \"left\"\n"
+            "position_mm = " +
+            second_position + "\n";
         return parse_piece(text, "free.toml", dir_);
     }
     fs::path dir_;
