@@ -43,8 +43,10 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm) {
     return glm::mat4(m);
 }
 
-void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm) {
-    program.set("u_view_projection", view_projection(camera, scene_radius_mm));
+namespace {
+
+// Everything of camera.glsl but u_view_projection: the pixel ray's uniforms.
+void set_ray_uniforms(const Program& program, const Camera& camera) {
     program.set("u_cam_forward", glm::vec3(camera.forward()));
     program.set("u_cam_right", glm::vec3(camera.right()));
     program.set("u_cam_up", glm::vec3(camera.up()));
@@ -56,16 +58,24 @@ void set_camera_uniforms(const Program& program, const Camera& camera, double sc
     program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));
 }
 
+}  // namespace
+
+void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm) {
+    program.set("u_view_projection", view_projection(camera, scene_radius_mm));
+    set_ray_uniforms(program, camera);
+}
+
 Camera stone_camera(const StoneFrame& frame) {
     return frame.camera.in_frame(frame.placement.rotation, frame.placement.position);
 }
 
 void set_camera_uniforms(const Program& program, const StoneFrame& frame) {
-    set_camera_uniforms(program, stone_camera(frame), frame.scene_radius_mm);
+    set_ray_uniforms(program, stone_camera(frame));
     glm::dmat4 model(frame.placement.rotation);
     model[3] = glm::dvec4(frame.placement.position, 1.0);
-    program.set("u_view_projection",
-                glm::mat4(glm::dmat4(view_projection(frame.camera, frame.scene_radius_mm)) * model));
+    program.set(
+        "u_view_projection",
+        glm::mat4(glm::dmat4(view_projection(frame.camera, frame.scene_radius_mm)) * model));
 }
 
 std::uint32_t shading_features(const StoneFrame& frame) {

@@ -21,9 +21,10 @@ struct Tip {
     double top;
 };
 
-// The seated tip at distance r from the axis along `out`.
-std::optional<Tip> tip_at(const Stone& stone, const glm::dvec3& out, double r, double radius) {
-    const double high = stone_extent(stone).table_y + 2.0 * radius + 1.0;
+// The seated tip at distance r from the axis along `out`, lowered from above the table.
+std::optional<Tip> tip_at(const Stone& stone, double table_y, const glm::dvec3& out, double r,
+                          double radius) {
+    const double high = table_y + 2.0 * radius + 1.0;
     const std::optional<glm::dvec3> c =
         seat_ball(stone, glm::dvec3(r * out.x, high, r * out.z), {0.0, -1.0, 0.0}, radius);
     if (!c) return std::nullopt;
@@ -64,8 +65,8 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
     auto fits = [&](double wire_width) {
         const double r = kTipToWire * 0.5 * wire_width;
         for (std::size_t k = 0; k < outs.size(); ++k) {
-            const std::optional<Tip> inner = tip_at(stone, outs[k], 0.3 * girdles[k], r);
-            const std::optional<Tip> outer = tip_at(stone, outs[k], girdles[k], r);
+            const std::optional<Tip> inner = tip_at(stone, e.table_y, outs[k], 0.3 * girdles[k], r);
+            const std::optional<Tip> outer = tip_at(stone, e.table_y, outs[k], girdles[k], r);
             if (!inner || !outer || inner->top < target || outer->top > target) return false;
         }
         return true;
@@ -94,10 +95,10 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
         double lo = 0.3 * girdle, hi = girdle;
         for (int i = 0; i < 50; ++i) {
             const double mid = 0.5 * (lo + hi);
-            const std::optional<Tip> t = tip_at(stone, out, mid, ball);
+            const std::optional<Tip> t = tip_at(stone, e.table_y, out, mid, ball);
             (t && t->top > target ? lo : hi) = mid;
         }
-        const Tip tip = *tip_at(stone, out, hi, ball);
+        const Tip tip = *tip_at(stone, e.table_y, out, hi, ball);
 
         auto at = [&](double r, double y) { return glm::dvec3(r * out.x, y, r * out.z); };
         // The least distance from the axis, at height y, at which a wire clears the stone by
@@ -123,7 +124,8 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
         // the upright, raised where that would take it into the stone.
         const glm::dvec3 normal = glm::normalize(tip.centre - closest_point(stone, tip.centre));
         const glm::dvec3 along = glm::normalize(out - glm::dot(out, normal) * normal);
-        const double s = (upright_r - glm::dot(tip.centre, out)) / std::max(glm::dot(along, out), 1e-6);
+        const double s =
+            (upright_r - glm::dot(tip.centre, out)) / std::max(glm::dot(along, out), 1e-6);
         glm::dvec3 bend = tip.centre + s * along;
         bend.y = std::max(bend.y, e.girdle_top + wire);
         auto wire_clears = [&](const glm::dvec3& from, const glm::dvec3& to, double skip) {
@@ -156,7 +158,8 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
             b.sphere(p, wire, 8, 12);
             previous = p;
         }
-        if (foot_y < knee_y) b.cylinder(at(glm::dot(previous, out), foot_y), previous, wire, -out, 8);
+        if (foot_y < knee_y)
+            b.cylinder(at(glm::dot(previous, out), foot_y), previous, wire, -out, 8);
         knees.push_back(previous);
         b.cylinder(bend, tip.centre, wire, glm::dvec3(0, 1, 0), 8);
         b.sphere(bend, wire, 8, 12);

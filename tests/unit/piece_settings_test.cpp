@@ -8,26 +8,20 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
-#include <cmath>
 #include <array>
+#include <cmath>
 #include <map>
 #include <string>
 
-#include "geometry/cuts.hpp"
 #include "optics/material.hpp"
 #include "piece/piece_check.hpp"
 #include "piece/seat.hpp"
 #include "piece/settings.hpp"
 #include "piece/stone_shape.hpp"
+#include "trace_cut_stones.hpp"
 
 namespace gem {
 namespace {
-
-Stone round_stone(double width_mm) {
-    CutParams p = default_cut_params(CutShape::round_brilliant);
-    p.width_mm = width_mm;
-    return make_cut(p, find_material("diamond").value()).value();
-}
 
 // How far a point (stone frame) lies inside a convex stone: the least depth below its planes;
 // negative outside.
@@ -50,7 +44,7 @@ std::vector<glm::dvec3> sphere_points(int n) {
 }
 
 struct Contact {
-    double overlap = 0.0;  // deepest sampled point of the ball inside the stone
+    double overlap = 0.0;    // deepest sampled point of the ball inside the stone
     double contact_y = 0.0;  // that point's height in the stone's frame
 };
 
@@ -83,10 +77,10 @@ Piece setting(SettingKind kind) {
     SettingParams p;
     p.kind = kind;
     std::optional<Stone> centre, small;
-    if (kind != SettingKind::band) centre = round_stone(6.5);
-    if (kind == SettingKind::halo) small = round_stone(1.3);
-    if (kind == SettingKind::three_stone) small = round_stone(4.0);
-    if (kind == SettingKind::band) small = round_stone(1.8);
+    if (kind != SettingKind::band) centre = test::round_diamond(6.5);
+    if (kind == SettingKind::halo) small = test::round_diamond(1.3);
+    if (kind == SettingKind::three_stone) small = test::round_diamond(4.0);
+    if (kind == SettingKind::band) small = test::round_diamond(1.8);
     auto piece = make_setting(p, to_string(kind), centre, small);
     EXPECT_TRUE(piece) << (piece ? "" : piece.error());
     return std::move(piece).value();
@@ -125,15 +119,16 @@ TEST_P(EverySetting, NoMetalCutsIntoAStoneDeeperThanTheSeat) {
         const Stone& stone = piece.stone_of(i);
         double deepest = 0.0;
         for (const glm::vec3& v : piece.metal.positions) {
-            deepest = std::max(deepest,
-                               depth_inside(stone, piece.stones[i].placement.to_stone(glm::dvec3(v))));
+            deepest = std::max(
+                deepest, depth_inside(stone, piece.stones[i].placement.to_stone(glm::dvec3(v))));
         }
         EXPECT_LE(deepest, kSeatMm + 1e-6) << piece.stones[i].role;
     }
 }
 
 // Rays from each stone's centre outward: any metal they meet inside the stone must lie within a
-// seat of its surface, so no claw, wall or bead passes through a stone between its vertices. Möller and Trumbore's ray-triangle test, written here apart from the engine's.
+// seat of its surface, so no claw, wall or bead passes through a stone between its vertices. Möller
+// and Trumbore's ray-triangle test, written here apart from the engine's.
 double ray_hits_triangle(const glm::dvec3& o, const glm::dvec3& d, const glm::dvec3& a,
                          const glm::dvec3& b, const glm::dvec3& c) {
     const glm::dvec3 e1 = b - a, e2 = c - a, q = glm::cross(d, e2);
@@ -162,7 +157,8 @@ TEST_P(EverySetting, RaysFromEachStonesCentreLeaveTheStoneBeforeTheyMeetMetal) {
             std::array<glm::dvec3, 3> tri;
             bool close = false;
             for (int k = 0; k < 3; ++k) {
-                tri[k] = place.to_stone(glm::dvec3(piece.metal.positions[piece.metal.indices[t + k]]));
+                tri[k] =
+                    place.to_stone(glm::dvec3(piece.metal.positions[piece.metal.indices[t + k]]));
                 close = close || glm::length(tri[k]) < radius + 1.0;
             }
             if (close) near.push_back(tri);
@@ -188,8 +184,8 @@ TEST_P(EverySetting, NoTwoStonesIntersect) {
             if (i == j) continue;
             double deepest = -1e300;
             for (const glm::dvec3& s : samples) {
-                const glm::dvec3 p = piece.stones[j].placement.to_stone(
-                    piece.stones[i].placement.to_piece(s));
+                const glm::dvec3 p =
+                    piece.stones[j].placement.to_stone(piece.stones[i].placement.to_piece(s));
                 deepest = std::max(deepest, depth_inside(piece.stone_of(j), p));
             }
             EXPECT_LT(deepest, 0.0) << piece.stones[i].role << " in " << piece.stones[j].role;
@@ -249,18 +245,18 @@ TEST(Settings, AHaloHasTwentyOrMoreStonesAndABandThirtyOrMore) {
 TEST(Settings, AParameterOutOfRangeIsNamed) {
     SettingParams p;
     p.claws.width_mm = 5.0;
-    auto bad = make_setting(p, "x", round_stone(6.5), std::nullopt);
+    auto bad = make_setting(p, "x", test::round_diamond(6.5), std::nullopt);
     ASSERT_FALSE(bad);
     EXPECT_EQ(bad.error().rfind("claw_width_mm:", 0), 0u) << bad.error();
     p = SettingParams{};
     p.kind = SettingKind::band;
     p.row.count = 80;
-    bad = make_setting(p, "x", std::nullopt, round_stone(1.8));
+    bad = make_setting(p, "x", std::nullopt, test::round_diamond(1.8));
     ASSERT_FALSE(bad);
     EXPECT_EQ(bad.error().rfind("count:", 0), 0u) << bad.error();
     p = SettingParams{};
     p.shank.finger_diameter_mm = 3.0;
-    bad = make_setting(p, "x", round_stone(6.5), std::nullopt);
+    bad = make_setting(p, "x", test::round_diamond(6.5), std::nullopt);
     ASSERT_FALSE(bad);
     EXPECT_EQ(bad.error().rfind("finger_diameter_mm:", 0), 0u) << bad.error();
 }
@@ -268,12 +264,12 @@ TEST(Settings, AParameterOutOfRangeIsNamed) {
 // Two 2 mm round brilliants side by side: their girdles (radius 1 mm, faceted) overlap when
 // the centres are closer than 2 mm less the girdle facets' sag, and not when farther than 2 mm.
 TEST(Settings, StonesIntersectOnlyWhenTheyShareVolume) {
-    const Stone s = round_stone(2.0);
+    const Stone s = test::round_diamond(2.0);
     const Placement a{};
     EXPECT_TRUE(stones_intersect(s, a, s, {glm::dmat3(1.0), {1.9, 0.0, 0.0}}));
     EXPECT_FALSE(stones_intersect(s, a, s, {glm::dmat3(1.0), {2.01, 0.0, 0.0}}));
     // One stone inside another, surfaces apart: still shared volume.
-    EXPECT_TRUE(stones_intersect(round_stone(6.0), a, round_stone(0.5), a));
+    EXPECT_TRUE(stones_intersect(test::round_diamond(6.0), a, test::round_diamond(0.5), a));
 }
 
 TEST(Settings, APieceWhoseStoneIsLiftedOffItsClawsFloats) {

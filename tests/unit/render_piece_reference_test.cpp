@@ -7,19 +7,13 @@
 
 #include <cmath>
 
-#include "geometry/cuts.hpp"
 #include "optics/material.hpp"
 #include "piece/metal.hpp"
 #include "render/reference_render.hpp"
+#include "trace_cut_stones.hpp"
 
 namespace gem {
 namespace {
-
-Stone diamond(double width) {
-    CutParams p = default_cut_params(CutShape::round_brilliant);
-    p.width_mm = width;
-    return make_cut(p, find_material("diamond").value()).value();
-}
 
 RenderSettings small_picture() {
     RenderSettings s;
@@ -34,7 +28,7 @@ RenderSettings small_picture() {
 }
 
 TEST(PieceReference, APieceOfOneStoneIsTheLooseStonesReference) {
-    const Stone stone = diamond(6.5);
+    const Stone stone = test::round_diamond(6.5);
     Piece piece;
     piece.name = "loose";
     piece.kinds.push_back(stone);

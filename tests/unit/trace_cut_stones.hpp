@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "geometry/cuts.hpp"
+#include "optics/material.hpp"
 
 namespace gem::test {
 
@@ -18,6 +19,13 @@ inline Material constant_index_material(double n) {
     m.dispersion.kind = Dispersion::Kind::constant;
     m.dispersion.coef = {n};
     return m;
+}
+
+// A Tolkowsky round brilliant of the given girdle width in the catalogue's diamond.
+inline Stone round_diamond(double width_mm) {
+    CutParams p = default_cut_params(CutShape::round_brilliant);
+    p.width_mm = width_mm;
+    return make_cut(p, find_material("diamond").value()).value();
 }
 
 inline constexpr CutShape kAllCuts[] = {
