@@ -55,7 +55,8 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     // neither (a test's hand-made catalogue) has its database opened here.
     scene->database_ = stone.opened;
     scene->designed_ = stone.designed;
-    if (!scene->database_ && !scene->designed_) {
+    scene->piece_ = stone.placed;
+    if (!scene->database_ && !scene->designed_ && !scene->piece_) {
         auto database = Database::open(stone.database);
         if (!database) return fail(database.error());
         scene->database_ = std::make_shared<const Database>(std::move(database).value());
@@ -72,8 +73,11 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     scene->environment_ = std::move(environment).value();
 
     gpu::FrameSetup setup;
-    // A design is drawn by the exact trace, which needs no tables.
-    setup.method = scene->database_ ? render.method : gpu::Method::trace;
+    // A design or a piece is drawn by the exact trace, which needs no tables (phong, the
+    // baseline, draws either).
+    setup.method = scene->database_ || render.method == gpu::Method::phong ? render.method
+                                                                           : gpu::Method::trace;
+    setup.piece = scene->piece_.get();
     setup.database = scene->database_;
     setup.stone = geometry;
     setup.material = scene->database_ ? scene->database_->material() : geometry.material;
@@ -102,7 +106,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
         look.background == LookChoice::Background::tent) {
         setup.background_colour = glm::vec3(look.colour * look.background_intensity);
     }
-    if (stone.ring != RingKind::none) {
+    if (stone.ring != RingKind::none && !scene->piece_) {
         auto ring = make_ring(stone, geometry);
         if (!ring) return fail(ring.error());
         scene->ring_ = std::move(ring).value();
@@ -115,10 +119,25 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     return scene;
 }
 
+const Stone& StoneScene::stone() const {
+    if (piece_) return piece_->stone_of(0);
+    return database_ ? database_->stone() : *designed_;
+}
+
 const Framing& StoneScene::framing(glm::ivec2 size) const {
     if (size == framed_size_) return framing_;
-    const std::vector<glm::dvec3>& stone = this->stone().vertices;
-    std::vector<glm::dvec3> ring(ring_.positions.begin(), ring_.positions.end());
+    // The hero is the loose stone, or a piece's centre stone; everything else is "ring".
+    std::vector<glm::dvec3> stone = this->stone().vertices;
+    const MetalMesh& metal = piece_ ? piece_->metal : ring_;
+    std::vector<glm::dvec3> ring(metal.positions.begin(), metal.positions.end());
+    if (piece_) {
+        for (glm::dvec3& p : stone) p = piece_->stones.front().placement.to_piece(p);
+        for (std::size_t i = 1; i < piece_->stones.size(); ++i) {
+            for (const glm::dvec3& p : piece_->stone_of(i).vertices) {
+                ring.push_back(piece_->stones[i].placement.to_piece(p));
+            }
+        }
+    }
     framing_ =
         frame_ring(stone, ring, kStartView, size, renderer_->scene_radius_mm(), stone_share_);
     framed_size_ = size;

@@ -1,9 +1,9 @@
 #pragma once
 // What the kiosk shows at one moment, assembled for the GPU: one catalogue stone (its ray-table
-// database, its ring, its colour) under one background preset and one lighting preset, drawn
-// with the configured method. A new stone or background makes a new StoneScene (the
-// environment cube and the ring's cube faces are built once per scene); a new lighting preset
-// only changes the lights (and the environment level, which needs a new scene too).
+// database, its ring, its colour) or piece (its stones and metal) under one background preset and
+// one lighting preset, drawn with the configured method. A new stone or background makes a new
+// StoneScene (the environment cube and the ring's cube faces are built once per scene); a new
+// lighting preset only changes the lights (and the environment level, which needs a new scene too).
 
 #include <filesystem>
 #include <memory>
@@ -60,7 +60,9 @@ class StoneScene {
     // The stone's tables; a design (CatalogueStone::design) has none.
     bool has_database() const { return database_ != nullptr; }
     const Database& database() const { return *database_; }
-    const Stone& stone() const { return database_ ? database_->stone() : *designed_; }
+    // The stone, or a piece's centre stone (the hero of the picture).
+    const Stone& stone() const;
+    bool is_piece() const { return piece_ != nullptr; }
     const std::string& name() const { return name_; }
     // The camera for `view` in a picture of `size`, framed as framing.hpp says at the start
     // view (start_view.hpp); view.zoom scales that framing. `jitter_ndc`: a sub-pixel offset of
@@ -79,6 +81,7 @@ class StoneScene {
     std::string name_;
     std::shared_ptr<const Database> database_;
     std::shared_ptr<const Stone> designed_;
+    std::shared_ptr<const Piece> piece_;
     Environment environment_ = Environment::studio();
     MetalMesh ring_;
     std::optional<gpu::FrameRenderer> renderer_;

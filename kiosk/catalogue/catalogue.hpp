@@ -14,6 +14,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/ring_mesh.hpp"
+#include "piece/piece.hpp"
 #include "tables/reader.hpp"
 
 namespace gem::kiosk {
@@ -48,6 +49,10 @@ struct CatalogueStone {
     // model file, and a material), drawn by the exact trace, which needs no tables.
     std::filesystem::path design;           // absolute, inside the catalogue directory
     std::shared_ptr<const Stone> designed;  // the stone validation built from it
+    // Instead of either: a piece description (a .toml as in config/pieces/: a setting, its
+    // metal and stones), every stone drawn by the exact trace.
+    std::filesystem::path piece;          // absolute, inside the catalogue directory
+    std::shared_ptr<const Piece> placed;  // the piece validation built from it
     RingKind ring = RingKind::parametric;
     std::filesystem::path ring_obj;              // RingKind::obj: absolute path
     std::shared_ptr<const MetalMesh> ring_mesh;  // RingKind::obj: the mesh loaded

@@ -6,6 +6,8 @@
 #include <optional>
 #include <set>
 #include <string>
+#include <utility>
+#include <vector>
 
 #include <toml++/toml.h>
 
@@ -83,9 +85,14 @@ Problem read_metal(const toml::node& node, Metal& out) {
 Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
                    CatalogueStone& stone) {
     const std::size_t line = table.source().begin.line;
+    // Keys a piece answers in its own file, and where they were given.
+    std::vector<std::pair<std::string, std::size_t>> not_for_a_piece;
     for (auto&& [key, node] : table) {
         const std::string k(key.str());
         const std::string full = "stone." + k;
+        if (k == "ring" || k == "metal" || k == "colour" || k == "absorption_per_mm") {
+            not_for_a_piece.emplace_back(full, node.source().begin.line);
+        }
         Problem e;
         if (k == "name") {
             e = read_string(node, full, stone.name);
@@ -93,6 +100,8 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
             e = read_inner_path(node, full, dir, stone.database);
         } else if (k == "design") {
             e = read_inner_path(node, full, dir, stone.design);
+        } else if (k == "piece") {
+            e = read_inner_path(node, full, dir, stone.piece);
         } else if (k == "ring") {
             std::string text;
             e = read_string(node, full, text);
@@ -128,10 +137,16 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
         if (e) return e;
     }
     if (stone.name.empty()) return error_at(line, "stone.name", "missing");
-    if (stone.database.empty() == stone.design.empty()) {
-        return error_at(line, stone.database.empty() ? "stone.database" : "stone.design",
-                        stone.database.empty() ? "missing (or a stone.design)"
-                                               : "and stone.database both given: one of them");
+    const int sources =
+        int(!stone.database.empty()) + int(!stone.design.empty()) + int(!stone.piece.empty());
+    if (sources == 0) return error_at(line, "stone.database", "missing (or a design or a piece)");
+    if (sources > 1) {
+        return error_at(line, "stone", "give one of database, design and piece, not several");
+    }
+    // A piece brings its own setting, metal and stones' materials.
+    if (!stone.piece.empty() && !not_for_a_piece.empty()) {
+        return error_at(not_for_a_piece.front().second, not_for_a_piece.front().first,
+                        "a piece gives its setting, metal and materials in its own file");
     }
     return std::nullopt;
 }

@@ -5,6 +5,7 @@
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
 #include "piece/metal_obj.hpp"
+#include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"
 
 namespace gem::kiosk {
@@ -43,7 +44,17 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
     std::vector<CatalogueStone> kept;
     for (CatalogueStone& stone : catalogue.stones) {
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
-        if (!stone.design.empty()) {
+        if (!stone.piece.empty()) {
+            // So does a piece: a missing stone file, stones that intersect, a setting
+            // parameter out of range (piece/piece_file.hpp names the file and key).
+            Result<Piece> placed = load_piece(stone.piece);
+            if (!placed) {
+                catalogue.left_out.push_back("piece '" + stone.name + "' left out: " +
+                                             relative_message(placed.error(), stone.piece, real));
+                continue;
+            }
+            stone.placed = std::make_shared<const Piece>(std::move(placed).value());
+        } else if (!stone.design.empty()) {
             // A design that cannot be read leaves its stone out, not the catalogue.
             Result<Stone> designed = load_stone_file(stone.design);
             if (!designed) {

@@ -43,12 +43,16 @@ lighting = "window"
 name = "Loose diamond"
 database = "diamond.gemdb"
 ring = "none"
+
+[[stone]]
+name = "Halo"
+piece = "pieces/halo.toml"
 )");
     auto result = read_manifest(dir);
     ASSERT_TRUE(result.ok()) << result.error();
     const Catalogue& c = result.value();
     EXPECT_EQ(c.name, "spring");
-    ASSERT_EQ(c.stones.size(), 2u);
+    ASSERT_EQ(c.stones.size(), 3u);
     const CatalogueStone& a = c.stones[0];
     EXPECT_EQ(a.name, "Blue oval");
     EXPECT_EQ(a.database, dir / "stones" / "oval.gemdb");
@@ -70,6 +74,10 @@ ring = "none"
     EXPECT_FALSE(b.absorption_per_mm.has_value());
     EXPECT_TRUE(b.background.empty());
     EXPECT_EQ(b.opened, nullptr) << "reading the manifest opens nothing";
+    const CatalogueStone& halo = c.stones[2];
+    EXPECT_EQ(halo.piece, dir / "pieces" / "halo.toml");
+    EXPECT_TRUE(halo.database.empty());
+    EXPECT_EQ(halo.placed, nullptr) << "reading the manifest reads no piece";
 }
 
 TEST(CatalogueManifest, RingDefaultsToParametric) {
@@ -89,9 +97,21 @@ TEST(CatalogueManifest, ErrorsNameFileLineAndKey) {
                  "catalogue.toml:6: stone.ring: 'gold band' is not parametric, none or a .obj "
                  "file");
     expect_error("no-database", head + "metal = \"silver\"\n",
-                 "catalogue.toml:3: stone.database: missing (or a stone.design)");
+                 "catalogue.toml:3: stone.database: missing (or a design or a piece)");
     expect_error("both", head + "database = \"a.gemdb\"\ndesign = \"a.toml\"\n",
-                 "catalogue.toml:3: stone.design: and stone.database both given: one of them");
+                 "catalogue.toml:3: stone: give one of database, design and piece, not several");
+    expect_error("piece-and-design", head + "piece = \"p.toml\"\ndesign = \"a.toml\"\n",
+                 "catalogue.toml:3: stone: give one of database, design and piece, not several");
+    // A piece names its metal, setting and stones' materials in its own file.
+    expect_error("piece-metal", head + "piece = \"p.toml\"\nmetal = \"silver\"\n",
+                 "catalogue.toml:6: stone.metal: a piece gives its setting, metal and materials "
+                 "in its own file");
+    expect_error("piece-ring", head + "ring = \"none\"\npiece = \"p.toml\"\n",
+                 "catalogue.toml:5: stone.ring: a piece gives its setting, metal and materials "
+                 "in its own file");
+    expect_error("piece-escapes", head + "piece = \"../p.toml\"\n",
+                 "catalogue.toml:5: stone.piece: '../p.toml' must not leave the catalogue "
+                 "directory");
     expect_error("design-escapes", head + "design = \"../a.toml\"\n",
                  "catalogue.toml:5: stone.design: '../a.toml' must not leave the catalogue "
                  "directory");

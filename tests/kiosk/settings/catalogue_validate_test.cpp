@@ -177,5 +177,56 @@ design = "odd.toml"
         << rejection("designs", dir);
 }
 
+// A piece is read with its stones and checked as gemrender reads it; a piece that names a
+// missing stone file, or whose setting parameter is out of range, is left out in one line naming
+// the piece, its file, the line and the key, and the catalogue's other entries show.
+TEST(CatalogueValidate, PiecesAreReadAndABrokenOneIsLeftOutByName) {
+    const fs::path dir = fresh_dir("validate-pieces");
+    write_text(dir / "catalogue.toml", R"([catalogue]
+name = "pieces"
+[[stone]]
+name = "Halo"
+piece = "pieces/halo.toml"
+[[stone]]
+name = "No stone"
+piece = "pieces/missing-stone.toml"
+[[stone]]
+name = "Wide gap"
+piece = "pieces/wide-gap.toml"
+)");
+    const fs::path config = fs::path(GEM_SOURCE_DIR) / "config";
+    fs::create_directories(dir / "stones");
+    for (const char* stone : {"tolkowsky-diamond.toml", "melee-diamond.toml"}) {
+        fs::copy_file(config / "stones" / stone, dir / "stones" / stone);
+    }
+    const std::vector<std::uint8_t> bytes = read_bytes(config / "pieces" / "halo.toml");
+    const std::string halo(bytes.begin(), bytes.end());
+    write_text(dir / "pieces" / "halo.toml", halo);
+    std::string missing = halo;
+    missing.replace(missing.find("melee-diamond"), 13, "pebble");
+    write_text(dir / "pieces" / "missing-stone.toml", missing);
+    std::string wide = halo;
+    wide.replace(wide.find("gap_mm = 0.15"), 13, "gap_mm = 9.00");
+    write_text(dir / "pieces" / "wide-gap.toml", wide);
+
+    auto result = validate_catalogue(dir);
+    ASSERT_TRUE(result.ok()) << result.error();
+    const Catalogue& c = result.value();
+    ASSERT_EQ(c.stones.size(), 1u);
+    EXPECT_EQ(c.stones[0].name, "Halo");
+    ASSERT_NE(c.stones[0].placed, nullptr);
+    // The shipped halo: the centre stone and 22 small ones (config/pieces/halo.toml).
+    EXPECT_EQ(c.stones[0].placed->stones.size(), 23u);
+    EXPECT_EQ(c.stones[0].placed->kinds.size(), 2u);
+    ASSERT_EQ(c.left_out.size(), 2u);
+    EXPECT_EQ(c.left_out[0].rfind("piece 'No stone' left out: pieces/missing-stone.toml:", 0), 0u)
+        << c.left_out[0];
+    EXPECT_NE(c.left_out[0].find("small.stone"), std::string::npos) << c.left_out[0];
+    EXPECT_NE(c.left_out[0].find("pebble.toml"), std::string::npos) << c.left_out[0];
+    EXPECT_EQ(c.left_out[1].rfind("piece 'Wide gap' left out: pieces/wide-gap.toml:", 0), 0u)
+        << c.left_out[1];
+    EXPECT_NE(c.left_out[1].find("small.gap_mm: must be"), std::string::npos) << c.left_out[1];
+}
+
 }  // namespace
 }  // namespace gem::kiosk
