@@ -179,9 +179,14 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         glFinish();
         stats.stone_ms = ms_since(stone_start);
     }
+    const auto metal_start = Clock::now();
     if (ring_) {
         ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
         if (!ok) return Error{ok.error()};
+        if (wait == FrameWait::passes) {
+            glFinish();
+            stats.metal_ms = ms_since(metal_start);
+        }
     }
     if (wait != FrameWait::none) glFinish();
     stats.cpu_ms = ms_since(start);

@@ -59,6 +59,7 @@ struct FrameStats {
     // (FrameWait::passes only; 0 otherwise): what the method costs, without the picture's
     // other passes.
     double stone_ms = 0.0;
+    double metal_ms = 0.0;  // the ring's or piece's metal pass alone, as stone_ms
     TableFrameStats table;
 };
 

@@ -79,6 +79,7 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
     r.f0_ = mesh.f0;
     r.roughness_ = mesh.roughness;
     r.radius_mm_ = mesh.radius_mm();
+    r.closed_ = mesh.closed;
     r.index_count_ = static_cast<GLsizei>(mesh.indices.size());
     r.vertex_array_ = make_vertex_array();
     glBindVertexArray(r.vertex_array_.get());
@@ -103,7 +104,7 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
 
 void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
                              bool eye_at_infinity, const ShadingSettings& lights,
-                             const EnvironmentCube& environment) const {
+                             const EnvironmentCube& environment, bool cull_back) const {
     const Program& ring = *ring_.find(light_count_feature(lights.lights));
     ring.use();
     ring.set("u_view_projection", view_projection);
@@ -117,13 +118,19 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
     ring.set("u_environment_face", static_cast<float>(environment.face_size()));
     set_light_uniforms(ring, lights.lights);
     glDisable(GL_BLEND);
-    glDisable(GL_CULL_FACE);
+    if (cull_back) {
+        glEnable(GL_CULL_FACE);
+        glCullFace(GL_BACK);
+    } else {
+        glDisable(GL_CULL_FACE);
+    }
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(GL_LESS);
     glDepthMask(GL_TRUE);
     glBindVertexArray(vertex_array_.get());
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
     glBindVertexArray(0);
+    glDisable(GL_CULL_FACE);
 }
 
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
@@ -134,7 +141,11 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
     const bool at_infinity = camera.orthographic();
     const glm::vec3 eye = at_infinity ? glm::vec3(-camera.forward())
                                       : glm::vec3(-camera.forward() * camera.distance());
-    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, environment);
+    // Closed solids wound counter-clockwise from outside: their back faces lie behind their
+    // front ones, and shading them first only to be overdrawn cost a third of a halo ring's
+    // metal pass on llvmpipe (bench_pieces).
+    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, environment,
+              closed_);
     return gl_check("ring pass");
 }
 
@@ -188,8 +199,10 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         glBindVertexArray(vertex_array_.get());  // no attributes: fullscreen.vert needs none
         glDrawArrays(GL_TRIANGLES, 0, 3);
         if (index_count_ > 0) {
+            // Not culled: a cube face's projection mirrors the winding, and the faces are
+            // drawn only when the scene changes.
             draw_mesh(cube_face_projection(face, near_mm, far_mm), glm::vec3(0.0f), false,
-                      lights_from, background);
+                      lights_from, background, false);
         }
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);

@@ -43,7 +43,8 @@ class RingRenderer {
   private:
     RingRenderer(ProgramVariants ring, Program background);
     void draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye, bool eye_at_infinity,
-                   const ShadingSettings& lights, const EnvironmentCube& environment) const;
+                   const ShadingSettings& lights, const EnvironmentCube& environment,
+                   bool cull_back) const;
 
     ProgramVariants ring_;  // one per light count, all built by make()
     Program background_;
@@ -55,6 +56,7 @@ class RingRenderer {
     glm::vec3 f0_{1.0f};
     float roughness_ = 0.25f;
     double radius_mm_ = 0.0;
+    bool closed_ = false;  // MetalMesh::closed: back faces culled in the frame
 };
 
 }  // namespace gem::gpu

@@ -19,6 +19,10 @@ struct MetalMesh {
     std::vector<std::uint32_t> indices;  // triangles, counter-clockwise seen from outside
     glm::vec3 f0{1.0f};                  // normal-incidence reflectance, linear RGB
     float roughness = 0.25f;             // GGX perceptual roughness, 0 (mirror) .. 1
+    // Every solid closed and wound as above, so a back face is never seen from outside and
+    // the renderer may cull it: what MeshBuilder makes. A model file's mesh (open, or wound
+    // either way) is not.
+    bool closed = false;
 
     std::size_t triangle_count() const { return indices.size() / 3; }
     // Radius of the sphere about the origin that holds the metal.
@@ -28,7 +32,11 @@ struct MetalMesh {
 // Adds solids to a mesh, each made in a local frame that `frame` takes into the mesh's.
 class MeshBuilder {
   public:
-    explicit MeshBuilder(MetalMesh& mesh, Placement frame = {}) : mesh_(mesh), frame_(frame) {}
+    // Building on an empty mesh makes it closed (MetalMesh::closed); on one that is not, it
+    // stays as it was.
+    explicit MeshBuilder(MetalMesh& mesh, Placement frame = {}) : mesh_(mesh), frame_(frame) {
+        if (mesh.indices.empty()) mesh.closed = true;
+    }
 
     // A tube of elliptic cross-section swept around a circle: centre `c`, the circle in the
     // plane of e0 and e1 (unit, perpendicular), cross-section semi-axes `radial` (in that

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -143,6 +144,29 @@ TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
         gpu_test::write_artifact(reference.value(), "piece_halo_reference");
     }
     EXPECT_GT(small, small_missing + 1.0);
+}
+
+// Culling the back faces of a closed metal mesh saves shading them, and must not change the
+// picture: the halo drawn with its mesh marked closed and marked open, compared pixel by pixel.
+TEST(GpuPiece, CullingAClosedMetalsBackFacesLeavesThePictureAsItWas) {
+    ASSERT_TRUE(gpu_test::context().ok());
+    auto halo = load_piece(std::filesystem::path(GEM_CONFIG_DIR) / "pieces" / "halo.toml");
+    ASSERT_TRUE(halo) << halo.error();
+    ASSERT_TRUE(halo.value().metal.closed);
+    Piece open = halo.value();
+    open.metal.closed = false;
+    RenderSettings s = settings();
+    s.camera.zoom = 1.5;
+    const double framing = halo.value().radius_mm();
+    const Image culled = draw_on_gpu(&halo.value(), nullptr, framing, s.camera);
+    const Image drawn = draw_on_gpu(&open, nullptr, framing, s.camera);
+    ASSERT_EQ(culled.pixels.size(), drawn.pixels.size());
+    double worst = 0.0;
+    for (std::size_t i = 0; i < culled.pixels.size(); ++i) {
+        const glm::vec4 d = glm::abs(culled.pixels[i] - drawn.pixels[i]);
+        worst = std::max({worst, double(d.x), double(d.y), double(d.z), double(d.w)});
+    }
+    EXPECT_LT(worst, 1e-4);
 }
 
 }  // namespace

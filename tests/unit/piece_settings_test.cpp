@@ -88,6 +88,30 @@ Piece setting(SettingKind kind) {
 
 class EverySetting : public ::testing::TestWithParam<SettingKind> {};
 
+// The renderer culls a closed mesh's back faces (MetalMesh::closed); that is right only if
+// every triangle's winding (counter-clockwise seen from outside) agrees with the outward
+// normals given at its corners.
+TEST_P(EverySetting, ItsMetalIsClosedAndWoundOutward) {
+    const Piece piece = setting(GetParam());
+    EXPECT_TRUE(piece.metal.closed);
+    const MetalMesh& m = piece.metal;
+    std::size_t against = 0, degenerate = 0;
+    for (std::size_t t = 0; t < m.indices.size(); t += 3) {
+        const glm::dvec3 a(m.positions[m.indices[t]]), b(m.positions[m.indices[t + 1]]),
+            c(m.positions[m.indices[t + 2]]);
+        const glm::dvec3 wound = glm::cross(b - a, c - a);
+        if (glm::length(wound) < 1e-12) {
+            ++degenerate;
+            continue;
+        }
+        const glm::dvec3 given(m.normals[m.indices[t]] + m.normals[m.indices[t + 1]] +
+                               m.normals[m.indices[t + 2]]);
+        if (glm::dot(wound, given) <= 0.0) ++against;
+    }
+    EXPECT_EQ(against, 0u) << "of " << m.indices.size() / 3 << " triangles";
+    EXPECT_LT(degenerate, m.indices.size() / 300) << "of " << m.indices.size() / 3;
+}
+
 TEST_P(EverySetting, EachClawTipOrBeadBearsOnItsStonesCrownNoDeeperThanTheSeat) {
     const Piece piece = setting(GetParam());
     ASSERT_FALSE(piece.holds.empty());

@@ -1,0 +1,182 @@
+// What a piece's frame costs against the solitaire's, printed, not asserted: each piece as the
+// kiosk draws it (kiosk/app/stone_scene.hpp: the shipped config's first look, the trace, the
+// start view framed as the kiosk frames it), the pieces drawn in turn frame by frame so that
+// the machine's load falls on all of them alike. Per piece: the median whole frame and its
+// stone pass alone (FrameWait::passes), and its stone pixels (centre and others: pixels whose
+// orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal in
+// front of a stone is not subtracted).
+//
+//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [piece.toml ...]
+//   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
+//    9 frames each)
+#include <GLES3/gl3.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
+
+#include "app/start_view.hpp"
+#include "app/stone_scene.hpp"
+#include "gpu/egl_context.hpp"
+#include "gpu/render_target.hpp"
+#include "piece/piece_file.hpp"
+#include "scene/scene.hpp"
+#include "trace/intersector.hpp"
+
+namespace {
+
+[[noreturn]] void fail(const std::string& why) {
+    std::fprintf(stderr, "bench_pieces: %s\n", why.c_str());
+    std::exit(1);
+}
+
+template <class T>
+T must(gem::Result<T> r) {
+    if (!r) fail(r.error());
+    return std::move(r).value();
+}
+
+double median(std::vector<double> v) {
+    std::sort(v.begin(), v.end());
+    return v.empty() ? 0.0 : v[v.size() / 2];
+}
+
+struct StonePixels {
+    long centre = 0;
+    long others = 0;
+};
+
+// Pixels whose ray meets a stone, each stone looked for only inside its bounding square.
+StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
+    const int w = camera.width(), h = camera.height();
+    std::vector<int> owner(static_cast<std::size_t>(w) * h, -1);
+    for (std::size_t i = 0; i < piece.stones.size(); ++i) {
+        const gem::Stone& stone = piece.stone_of(i);
+        const gem::Placement& at = piece.stones[i].placement;
+        const auto intersector = gem::make_intersector(stone);
+        const double radius = gem::bounding_radius(stone.vertices);
+        // The stone's centre on screen, from the rays of the two image corners.
+        const gem::Ray corner = camera.ray(0.0, 0.0);
+        const glm::dvec3 offset = at.position - corner.origin;
+        const double px = glm::dot(offset, camera.right()) / camera.pixel_size();
+        const double py = -glm::dot(offset, camera.up()) / camera.pixel_size();
+        const double r_px = radius / camera.pixel_size() + 1.0;
+        const int x0 = std::max(0, static_cast<int>(px - r_px));
+        const int x1 = std::min(w, static_cast<int>(px + r_px) + 1);
+        const int y0 = std::max(0, static_cast<int>(py - r_px));
+        const int y1 = std::min(h, static_cast<int>(py + r_px) + 1);
+        for (int y = y0; y < y1; ++y) {
+            for (int x = x0; x < x1; ++x) {
+                const gem::Ray ray = camera.ray(x + 0.5, y + 0.5);
+                gem::SurfaceHit hit;
+                if (intersector->next_entry(at.to_stone(ray.origin),
+                                            at.direction_to_stone(ray.direction), gem::kNoFacet,
+                                            hit)) {
+                    int& o = owner[static_cast<std::size_t>(y) * w + x];
+                    if (o != 0) o = static_cast<int>(i);  // the centre stone counts first
+                }
+            }
+        }
+    }
+    StonePixels count;
+    for (int o : owner) {
+        if (o == 0) ++count.centre;
+        if (o > 0) ++count.others;
+    }
+    return count;
+}
+
+struct Subject {
+    std::string file;
+    std::shared_ptr<const gem::Piece> piece;
+    std::unique_ptr<gem::kiosk::StoneScene> scene;
+    gem::Camera camera;
+    std::vector<double> frame_ms;
+    std::vector<double> stone_ms;
+    std::vector<double> metal_ms;
+};
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int width = 1920, height = 1080, frames = 9;
+    bool exact_fire = false;
+    int depth = 8;
+    std::vector<std::string> files;
+    for (int i = 1; i < argc; ++i) {
+        const std::string a = argv[i];
+        if (a == "--size" && i + 1 < argc) {
+            if (std::sscanf(argv[++i], "%dx%d", &width, &height) != 2) fail("--size WxH");
+        } else if (a == "--frames" && i + 1 < argc) {
+            frames = std::atoi(argv[++i]);
+        } else if (a == "--depth" && i + 1 < argc) {
+            depth = std::atoi(argv[++i]);
+        } else if (a == "--exact-fire") {
+            exact_fire = true;
+        } else if (a.rfind("--", 0) == 0) {
+            fail("unknown option " + a);
+        } else {
+            files.push_back(a);
+        }
+    }
+    const std::filesystem::path pieces = std::filesystem::path(GEM_CONFIG_DIR) / "pieces";
+    if (files.empty()) {
+        for (const char* name : {"solitaire", "halo", "eternity-band"}) {
+            files.push_back((pieces / (std::string(name) + ".toml")).string());
+        }
+    }
+    auto context = must(gem::gpu::EglContext::headless());
+    auto target = must(gem::gpu::RenderTarget::make(width, height));
+    // The kiosk's studio look with one key light, as bench_picture lights its ring.
+    gem::kiosk::LookChoice look;
+    look.lights = {{{-30.0, 80.0, 45.0}, false, {2.0, 2.0, 2.0}}};
+    gem::kiosk::RenderChoice render;
+    render.method = gem::gpu::Method::trace;
+    render.exact_fire = exact_fire;
+    render.depth = depth;
+
+    std::vector<Subject> subjects;
+    for (const std::string& file : files) {
+        Subject s;
+        s.file = std::filesystem::path(file).filename().string();
+        s.piece = std::make_shared<const gem::Piece>(must(gem::load_piece(file)));
+        gem::kiosk::CatalogueStone entry;
+        entry.name = s.piece->name;
+        entry.piece = file;
+        entry.placed = s.piece;
+        s.scene = must(gem::kiosk::StoneScene::make(entry, look, render));
+        s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
+        subjects.push_back(std::move(s));
+    }
+    target.bind();
+    for (int f = -1; f < frames; ++f) {
+        for (Subject& s : subjects) {
+            glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            const gem::gpu::FrameStats stats =
+                must(s.scene->renderer().render(s.camera, gem::gpu::FrameWait::passes));
+            if (f < 0) continue;  // the first frame compiles and uploads
+            s.frame_ms.push_back(stats.cpu_ms);
+            s.stone_ms.push_back(stats.stone_ms);
+            s.metal_ms.push_back(stats.metal_ms);
+        }
+    }
+    std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
+                width, height, exact_fire ? "exact" : "first-order", frames);
+    std::printf("%-20s %7s %9s %9s %9s %9s %10s %10s %9s\n", "piece", "stones", "frame ms",
+                "stone ms", "metal ms", "x first", "centre px", "others px", "metal tri");
+    const double first = median(subjects.front().frame_ms);
+    for (const Subject& s : subjects) {
+        const StonePixels px = stone_pixels(*s.piece, s.camera);
+        std::printf("%-20s %7zu %9.1f %9.1f %9.1f %9.2f %10ld %10ld %9zu\n", s.file.c_str(),
+                    s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms),
+                    median(s.metal_ms), median(s.frame_ms) / first, px.centre, px.others,
+                    s.piece->metal.indices.size() / 3);
+    }
+    return 0;
+}
