@@ -31,6 +31,40 @@ const Stone& FrameRenderer::stone() const {
     return setup_.method == Method::table ? setup_.database->stone() : setup_.stone;
 }
 
+const Stone& FrameRenderer::kind(std::size_t k) const {
+    return setup_.piece != nullptr ? setup_.piece->kinds[k] : stone();
+}
+
+std::size_t FrameRenderer::first_of_kind(std::size_t k) const {
+    for (std::size_t i = 0; i < kinds_.size(); ++i) {
+        if (kinds_[i] == k) return i;
+    }
+    return 0;
+}
+
+void FrameRenderer::set_model(std::size_t k, const StoneModel& model) {
+    models_[k] = model;
+    kind_trace_[k].max_depth = model.depth;
+}
+
+Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
+                                            const StoneModel& model) {
+    if (setup_.method != Method::trace) return Error{"frame renderer: models are the trace's"};
+    StoneFrame frame = frames_[first_of_kind(k)];
+    frame.placement = {};
+    frame.stone = &kind(k);
+    frame.camera = camera;
+    frame.environment = ring_cube_ ? ring_cube_.get() : environment_cube_.get();
+    frame.cube_half_mm = cube_half_mm_;
+    frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
+    TraceSettings trace = setup_.trace;
+    trace.max_depth = model.depth;
+    glDepthMask(GL_TRUE);
+    glClearDepthf(1.0f);
+    glClear(GL_DEPTH_BUFFER_BIT);
+    return trace_[k]->draw(frame, trace, model.fire);
+}
+
 Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     if (setup.environment == nullptr) return Error{"frame renderer: no environment"};
     if (setup.method == Method::table && setup.database == nullptr) {
@@ -92,6 +126,10 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
                 break;
             }
         }
+    }
+    for (std::size_t k = 0; k < kinds.size(); ++k) {
+        r.models_.push_back({s.trace.max_depth, s.trace_dispersion});
+        r.kind_trace_.push_back(s.trace);
     }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
@@ -167,7 +205,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
                 ok = table_->draw(frame, &stats.table);
                 break;
             case Method::trace:
-                ok = trace_[kind]->draw(frame, setup_.trace, setup_.trace_dispersion);
+                ok = trace_[kind]->draw(frame, kind_trace_[kind], models_[kind].fire);
                 break;
             case Method::phong:
                 ok = phong_[kind]->draw(frame);

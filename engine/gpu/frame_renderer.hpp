@@ -49,6 +49,15 @@ struct FrameSetup {
     const Piece* piece = nullptr;
 };
 
+// How one kind of stone is traced: the depth followed and how fire is coloured. The frame
+// renderer starts every kind at the setup's (FrameSetup::trace, trace_dispersion); a piece's
+// small stones may be given less (stone_models.hpp chooses it by measurement).
+struct StoneModel {
+    int depth = 8;
+    TraceDispersion fire = TraceDispersion::none;
+    bool operator==(const StoneModel&) const = default;
+};
+
 // What render() waits for: nothing (a display's swap paces it), the whole frame (timing), or
 // each pass too (benchmarks: the stone pass timed alone; the extra waits cost time).
 enum class FrameWait { none, frame, passes };
@@ -75,8 +84,26 @@ class FrameRenderer {
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 
+    Method method() const { return setup_.method; }
     // The stone (a piece's centre stone).
     const Stone& stone() const;
+
+    // The kinds of stone drawn (a piece's distinct stones; one for a loose stone), each traced
+    // with its own model (trace only; the other methods have none).
+    std::size_t kind_count() const { return models_.size(); }
+    const Stone& kind(std::size_t k) const;
+    // The stones drawn (a loose stone: one), each of a kind, placed in the piece.
+    std::size_t stone_count() const { return kinds_.size(); }
+    std::size_t kind_of(std::size_t stone) const { return kinds_[stone]; }
+    const Placement& placement_of(std::size_t stone) const { return frames_[stone].placement; }
+    // The first stone of kind `k` (its placement, material).
+    std::size_t first_of_kind(std::size_t k) const;
+    const StoneModel& model(std::size_t k) const { return models_[k]; }
+    void set_model(std::size_t k, const StoneModel& model);
+    // Draws the first stone of kind `k` alone, loose at the centre with its material, as
+    // `model` traces it, into the bound framebuffer (viewport set; depth cleared first), seeing
+    // what the piece's stones see: for measuring a model (stone_models.hpp). Trace only.
+    Result<bool> draw_kind_alone(std::size_t k, const Camera& camera, const StoneModel& model);
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
@@ -97,6 +124,8 @@ class FrameRenderer {
     // (the method below).
     std::vector<StoneFrame> frames_;
     std::vector<std::size_t> kinds_;
+    std::vector<StoneModel> models_;         // per kind
+    std::vector<TraceSettings> kind_trace_;  // per kind: the setup's, at its model's depth
     std::unique_ptr<TableMethod> table_;
     std::vector<std::unique_ptr<TraceMethod>> trace_;  // one per kind of stone
     std::vector<std::unique_ptr<PhongMethod>> phong_;  // one per kind of stone

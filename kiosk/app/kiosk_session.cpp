@@ -317,6 +317,11 @@ void KioskSession::rebuild_scene(double now_s) {
                   framing.ring_cut ? "; the ring does not fit whole at that size"
                                    : ", the whole ring in view");
     log_info(framed);
+    if (auto models = scene_->choose_stone_models(display_->picture_size())) {
+        for (const std::string& line : models.value()) log_info(line);
+    } else {
+        log_error(models.error() + "; the stones not measured keep the configured model");
+    }
     if (const gpu::TraceMethod* trace = scene_->renderer().trace();
         trace != nullptr && scene_->renderer().stone().convex) {
         log_info(std::string("trace: exits by ") + gpu::to_string(trace->exit_search()) +

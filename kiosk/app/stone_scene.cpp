@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "app/start_view.hpp"
+#include "gpu/stone_models.hpp"
 #include "piece/metal_obj.hpp"
 #include "scene/scene.hpp"
 #include "tables/reader.hpp"
@@ -128,6 +129,10 @@ const Framing& StoneScene::framing(glm::ivec2 size) const {
     if (size == framed_size_) return framing_;
     // The hero is the loose stone, or a piece's centre stone; everything else is "ring".
     std::vector<glm::dvec3> stone = this->stone().vertices;
+    // A piece of one kind of stone (a band) has no hero: the whole piece is framed, as tight
+    // as it fits (a share no stone reaches).
+    const bool hero = !piece_ || piece_->kinds.size() > 1 || piece_->stones.size() == 1;
+    const double share = hero ? stone_share_ : 1e-3;
     const MetalMesh& metal = piece_ ? piece_->metal : ring_;
     std::vector<glm::dvec3> ring(metal.positions.begin(), metal.positions.end());
     if (piece_) {
@@ -138,10 +143,24 @@ const Framing& StoneScene::framing(glm::ivec2 size) const {
             }
         }
     }
-    framing_ =
-        frame_ring(stone, ring, kStartView, size, renderer_->scene_radius_mm(), stone_share_);
+    framing_ = frame_ring(stone, ring, kStartView, size, renderer_->scene_radius_mm(), share);
     framed_size_ = size;
     return framing_;
+}
+
+Result<std::vector<std::string>> StoneScene::choose_stone_models(glm::ivec2 size) {
+    std::vector<std::string> lines;
+    if (!piece_) return lines;
+    auto camera = this->camera(kStartView, size);
+    if (!camera) return Error{"stone models: " + camera.error()};
+    auto chosen = gpu::choose_stone_models(*renderer_, camera.value());
+    if (!chosen) return Error{chosen.error()};
+    for (const gpu::ModelChoice& choice : chosen.value()) {
+        std::size_t instances = 0;
+        for (const PieceStone& s : piece_->stones) instances += s.kind == choice.kind ? 1 : 0;
+        lines.push_back("stone model: " + gpu::describe(choice, *renderer_, instances));
+    }
+    return lines;
 }
 
 Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size,

@@ -69,6 +69,9 @@ class StoneScene {
     // the frame (HdrPicture::jitter_ndc).
     Result<Camera> camera(const ViewState& view, glm::ivec2 size,
                           glm::dvec2 jitter_ndc = glm::dvec2(0.0)) const;
+    // A piece's small stones each given the model the start view in a picture of `size` needs
+    // (gpu/stone_models.hpp); one log line per distinct stone measured, none for a loose stone.
+    Result<std::vector<std::string>> choose_stone_models(glm::ivec2 size);
     // The framing for a picture of `size` (computed once per size).
     const Framing& framing(glm::ivec2 size) const;
 

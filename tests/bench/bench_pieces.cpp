@@ -4,7 +4,9 @@
 // the machine's load falls on all of them alike. Per piece: the median whole frame and its
 // stone pass alone (FrameWait::passes), and its stone pixels (centre and others: pixels whose
 // orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal in
-// front of a stone is not subtracted).
+// front of a stone is not subtracted). A piece of several stones is drawn twice: with every
+// stone traced as configured, and with its small stones' models chosen as the kiosk chooses
+// them (gpu/stone_models.hpp), the choice printed.
 //
 //   bench_pieces [--size WxH] [--frames N] [--exact-fire] [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
@@ -93,6 +95,7 @@ StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
 
 struct Subject {
     std::string file;
+    bool chosen = false;  // small stones' models chosen (gpu/stone_models.hpp), else configured
     std::shared_ptr<const gem::Piece> piece;
     std::unique_ptr<gem::kiosk::StoneScene> scene;
     gem::Camera camera;
@@ -142,16 +145,29 @@ int main(int argc, char** argv) {
 
     std::vector<Subject> subjects;
     for (const std::string& file : files) {
-        Subject s;
-        s.file = std::filesystem::path(file).filename().string();
-        s.piece = std::make_shared<const gem::Piece>(must(gem::load_piece(file)));
-        gem::kiosk::CatalogueStone entry;
-        entry.name = s.piece->name;
-        entry.piece = file;
-        entry.placed = s.piece;
-        s.scene = must(gem::kiosk::StoneScene::make(entry, look, render));
-        s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
-        subjects.push_back(std::move(s));
+        const auto piece = std::make_shared<const gem::Piece>(must(gem::load_piece(file)));
+        // Each piece as configured, then with its small stones' models chosen as the kiosk
+        // chooses them (a loose stone or a solitaire has none to choose).
+        for (bool chosen : {false, true}) {
+            if (chosen && piece->stones.size() < 2) continue;
+            Subject s;
+            s.file = std::filesystem::path(file).filename().string();
+            s.chosen = chosen;
+            s.piece = piece;
+            gem::kiosk::CatalogueStone entry;
+            entry.name = piece->name;
+            entry.piece = file;
+            entry.placed = piece;
+            s.scene = must(gem::kiosk::StoneScene::make(entry, look, render));
+            if (chosen) {
+                for (const std::string& line :
+                     must(s.scene->choose_stone_models({width, height}))) {
+                    std::printf("%s: %s\n", s.file.c_str(), line.c_str());
+                }
+            }
+            s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
+            subjects.push_back(std::move(s));
+        }
     }
     target.bind();
     for (int f = -1; f < frames; ++f) {
@@ -168,15 +184,16 @@ int main(int argc, char** argv) {
     }
     std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
                 width, height, exact_fire ? "exact" : "first-order", frames);
-    std::printf("%-20s %7s %9s %9s %9s %9s %10s %10s %9s\n", "piece", "stones", "frame ms",
-                "stone ms", "metal ms", "x first", "centre px", "others px", "metal tri");
+    std::printf("%-20s %8s %7s %9s %9s %9s %9s %10s %10s %9s\n", "piece", "models", "stones",
+                "frame ms", "stone ms", "metal ms", "x first", "centre px", "others px",
+                "metal tri");
     const double first = median(subjects.front().frame_ms);
     for (const Subject& s : subjects) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
-        std::printf("%-20s %7zu %9.1f %9.1f %9.1f %9.2f %10ld %10ld %9zu\n", s.file.c_str(),
-                    s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms),
-                    median(s.metal_ms), median(s.frame_ms) / first, px.centre, px.others,
-                    s.piece->metal.indices.size() / 3);
+        std::printf("%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %10ld %10ld %9zu\n", s.file.c_str(),
+                    s.chosen ? "chosen" : "config", s.piece->stones.size(), median(s.frame_ms),
+                    median(s.stone_ms), median(s.metal_ms), median(s.frame_ms) / first, px.centre,
+                    px.others, s.piece->metal.indices.size() / 3);
     }
     return 0;
 }
