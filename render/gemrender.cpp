@@ -11,6 +11,7 @@
 
 #include <CLI/CLI.hpp>
 
+#include "gpu/stone_method.hpp"
 #include "gpu_render.hpp"
 #include "piece/piece_file.hpp"
 #include "render/image.hpp"
@@ -159,8 +160,13 @@ int main(int argc, char** argv) {
     app.add_option("--piece", o.piece,
                    "a piece description (config/pieces/README.md) instead of a stone")
         ->check(CLI::ExistingFile);
-    app.add_option("--method", o.method, "reference (CPU, exact), table, trace or phong (GPU)")
-        ->check(CLI::IsMember({"reference", "table", "trace", "phong"}));
+    // The CPU's exact reference, or a GPU stone method by its registry name.
+    std::vector<std::string> methods = {"reference"};
+    for (const gem::gpu::MethodEntry& m : gem::gpu::stone_methods()) methods.emplace_back(m.name);
+    app.add_option(
+           "--method", o.method,
+           "reference (CPU, exact) or a GPU stone method (" + gem::gpu::stone_method_names() + ")")
+        ->check(CLI::IsMember(methods));
     app.add_option("--db", o.gpu.database, "ray-table database for --method table")
         ->check(CLI::ExistingFile);
     app.add_flag("--blend", o.gpu.blend, "table: blend the two nearest stored views");

@@ -41,25 +41,26 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     if (!context) return fail(context.error());
 
     gpu::FrameSetup setup;
-    if (o.method == "table") {
-        setup.method = gpu::Method::table;
-        if (o.database.empty()) return fail("--method table needs --db FILE.gemdb");
+    const gpu::MethodEntry* method = gpu::find_stone_method(o.method);
+    if (method == nullptr) {
+        return fail("--method: unknown method '" + o.method + "' (this build has reference, " +
+                    gpu::stone_method_names() + ")");
+    }
+    setup.method = o.method;
+    if (method->needs_database) {
+        if (o.piece != nullptr) return fail("--method " + o.method + " draws one loose stone");
+        if (o.database.empty()) return fail("--method " + o.method + " needs --db FILE.gemdb");
         auto db = Database::open(o.database);
         if (!db) return fail(db.error());
         setup.database = std::make_shared<const Database>(std::move(db).value());
         setup.material = setup.database->material();
-    } else if (o.method == "trace" || o.method == "phong") {
-        setup.method = o.method == "trace" ? gpu::Method::trace : gpu::Method::phong;
-        if (o.piece != nullptr) {
-            setup.piece = o.piece;
-        } else {
-            auto stone = build_stone(scene);
-            if (!stone) return fail(stone.error());
-            setup.stone = std::move(stone).value();
-            setup.material = setup.stone.material;
-        }
+    } else if (o.piece != nullptr) {
+        setup.piece = o.piece;
     } else {
-        return fail("--method: unknown method '" + o.method + "'");
+        auto stone = build_stone(scene);
+        if (!stone) return fail(stone.error());
+        setup.stone = std::move(stone).value();
+        setup.material = setup.stone.material;
     }
     // Colour and absorption are shading-time choices, also over a database's material.
     if (scene.material.colour) setup.material.body_colour = *scene.material.colour;
@@ -90,8 +91,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         if (!metal) {
             return fail("--metal: unknown metal '" + o.metal + "' (" + kMetalNames + ")");
         }
-        const Stone& stone =
-            setup.method == gpu::Method::table ? setup.database->stone() : setup.stone;
+        const Stone& stone = method->needs_database ? setup.database->stone() : setup.stone;
         Result<MetalMesh> made = Error{""};
         if (o.ring == "parametric") {
             gpu::RingParams params;
@@ -108,9 +108,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     auto renderer = gpu::FrameRenderer::make(std::move(setup));
     if (!renderer) return fail(renderer.error());
     gpu::FrameRenderer& r = renderer.value();
-    if (const gpu::TraceMethod* trace = r.trace(); trace != nullptr && r.stone().convex) {
-        std::printf("gemrender: trace finds exits by %s (64×64 test: %s)\n",
-                    gpu::to_string(trace->exit_search()), trace->measurement().c_str());
+    if (const std::string settled = r.method().describe(); !settled.empty()) {
+        std::printf("gemrender: %s %s\n", o.method.c_str(), settled.c_str());
     }
     // A piece is framed by its bounding sphere, as the CPU reference frames it; a stone by its.
     const double framing_mm = o.piece != nullptr ? o.piece->radius_mm() : r.stone_radius_mm();
@@ -138,13 +137,10 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         cs.azimuth_deg += step * f;
         auto camera = Camera::make(cs, framing_mm, scene.width, scene.height);
         if (!camera) return fail(camera.error());
-        if (r.table() != nullptr && o.frames > 1) {
+        if (o.frames > 1) {
             // The turntable turns about +y at `step` per frame of a 60 Hz display.
             const double omega = step * std::numbers::pi / 180.0 * 60.0;
-            r.table()->cache().prefetch(
-                -camera.value().forward(), {0.0, omega, 0.0},
-                r.table()->level_for(r.table()->database().camera().field_mm /
-                                     camera.value().pixel_size()));
+            r.prepare(camera.value(), {0.0, omega, 0.0});
         }
         // One frame into the HDR picture and out through its finishing passes; `still`: the
         // view of the frame before, moved by the picture's sub-pixel jitter.
@@ -179,7 +175,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         stream_ms.push_back(t.acquire_ms + t.upload_ms + t.wait_ms);
         if (o.frames > 1) {
             std::printf("frame %4d: %7.2f ms", f, frame_ms.back());
-            if (r.table() != nullptr) {
+            if (method->needs_database) {
                 std::printf("  streaming %6.2f ms (%u uploads, level %u%s)", stream_ms.back(),
                             t.uploads, t.level, t.exact ? "" : ", stand-in");
             }

@@ -10,28 +10,18 @@
 
 namespace gem::gpu {
 
-const char* to_string(Method method) {
-    switch (method) {
-        case Method::table:
-            return "table";
-        case Method::trace:
-            return "trace";
-        case Method::phong:
-            return "phong";
-    }
-    return "?";
-}
-
 FrameRenderer::FrameRenderer(FrameRenderer&&) noexcept = default;
 FrameRenderer& FrameRenderer::operator=(FrameRenderer&&) noexcept = default;
 FrameRenderer::~FrameRenderer() = default;
 
 const Stone& FrameRenderer::stone() const {
     if (setup_.piece != nullptr) return setup_.piece->stone_of(0);
-    return setup_.method == Method::table ? setup_.database->stone() : setup_.stone;
+    return setup_.database != nullptr && method_entry_->needs_database ? setup_.database->stone()
+                                                                       : setup_.stone;
 }
 
 const Stone& FrameRenderer::kind(std::size_t k) const {
+    // Looked up, not kept: a loose stone lives in this renderer, which may have moved.
     return setup_.piece != nullptr ? setup_.piece->kinds[k] : stone();
 }
 
@@ -42,14 +32,8 @@ std::size_t FrameRenderer::first_of_kind(std::size_t k) const {
     return 0;
 }
 
-void FrameRenderer::set_model(std::size_t k, const StoneModel& model) {
-    models_[k] = model;
-    kind_trace_[k].max_depth = model.depth;
-}
-
 Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
                                             const StoneModel& model) {
-    if (setup_.method != Method::trace) return Error{"frame renderer: models are the trace's"};
     StoneFrame frame = frames_[first_of_kind(k)];
     frame.placement = {};
     frame.stone = &kind(k);
@@ -57,20 +41,25 @@ Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
     frame.environment = ring_cube_ ? ring_cube_.get() : environment_cube_.get();
     frame.cube_half_mm = cube_half_mm_;
     frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
-    TraceSettings trace = setup_.trace;
-    trace.max_depth = model.depth;
     glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);
-    return trace_[k]->draw(frame, trace, model.fire);
+    return method_->draw_alone(k, frame, model);
 }
 
 Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     if (setup.environment == nullptr) return Error{"frame renderer: no environment"};
-    if (setup.method == Method::table && setup.database == nullptr) {
-        return Error{"frame renderer: the table method needs a database"};
+    const MethodEntry* entry = find_stone_method(setup.method);
+    if (entry == nullptr) {
+        return Error{"frame renderer: no stone method '" + setup.method + "' (this build has " +
+                     stone_method_names() + ")"};
+    }
+    if (entry->needs_database && setup.database == nullptr) {
+        return Error{"frame renderer: the " + setup.method + " method needs a database"};
     }
     FrameRenderer r;
+    r.method_entry_ = entry;
+    r.check_label_ = "frame (" + setup.method + ")";
     r.setup_ = std::move(setup);
     const FrameSetup& s = r.setup_;
     auto background = BackgroundPass::make();
@@ -83,10 +72,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     // The kinds of stone and where each stone is drawn: a piece's, or the one loose stone.
     std::vector<const Stone*> kinds;
     if (s.piece != nullptr) {
-        if (s.method == Method::table) {
-            return Error{
-                "frame renderer: a piece is drawn by trace or phong (a database holds "
-                "one loose stone)"};
+        if (!entry->draws_pieces) {
+            return Error{"frame renderer: the " + s.method +
+                         " method draws one loose stone, not a piece (a database holds one)"};
         }
         if (s.piece->stones.empty()) return Error{"frame renderer: the piece has no stones"};
         for (const Stone& kind : s.piece->kinds) kinds.push_back(&kind);
@@ -105,32 +93,10 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         r.kinds_.push_back(0);
     }
     for (StoneFrame& frame : r.frames_) frame.shading = s.shading;
-    for (const Stone* kind : kinds) {
-        switch (s.method) {
-            case Method::table: {
-                auto m = TableMethod::make(s.database, s.table);
-                if (!m) return Error{m.error()};
-                r.table_ = std::make_unique<TableMethod>(std::move(m).value());
-                break;
-            }
-            case Method::trace: {
-                auto m = TraceMethod::make(*kind);
-                if (!m) return Error{m.error()};
-                r.trace_.push_back(std::make_unique<TraceMethod>(std::move(m).value()));
-                break;
-            }
-            case Method::phong: {
-                auto m = PhongMethod::make(*kind, s.shading.h);
-                if (!m) return Error{m.error()};
-                r.phong_.push_back(std::make_unique<PhongMethod>(std::move(m).value()));
-                break;
-            }
-        }
-    }
-    for (std::size_t k = 0; k < kinds.size(); ++k) {
-        r.models_.push_back({s.trace.max_depth, s.trace_dispersion});
-        r.kind_trace_.push_back(s.trace);
-    }
+    r.kind_count_ = kinds.size();
+    auto method = entry->make(s, kinds);
+    if (!method) return Error{method.error()};
+    r.method_ = std::move(method).value();
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
     const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;
@@ -193,26 +159,15 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     }
     for (std::size_t i = 0; i < frames_.size(); ++i) {
         StoneFrame& frame = frames_[i];
-        const std::size_t kind = kinds_[i];
         // Filled in here: the stone lives in this renderer (or its piece), which may have moved.
-        frame.stone = setup_.piece != nullptr ? &setup_.piece->kinds[kind] : &stone();
+        frame.stone = &kind(kinds_[i]);
         frame.camera = camera;
         frame.environment = &seen;
         frame.cube_half_mm = cube_half_mm_;
         frame.scene_radius_mm = scene_radius_mm_;
-        switch (setup_.method) {
-            case Method::table:
-                ok = table_->draw(frame, &stats.table);
-                break;
-            case Method::trace:
-                ok = trace_[kind]->draw(frame, kind_trace_[kind], models_[kind].fire);
-                break;
-            case Method::phong:
-                ok = phong_[kind]->draw(frame);
-                break;
-        }
-        if (!ok) return Error{ok.error()};
     }
+    ok = method_->draw(frames_, kinds_, stats);
+    if (!ok) return Error{ok.error()};
     if (wait == FrameWait::passes) {
         glFinish();
         stats.stone_ms = ms_since(stone_start);
@@ -228,7 +183,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     }
     if (wait != FrameWait::none) glFinish();
     stats.cpu_ms = ms_since(start);
-    auto clean = gl_check(std::string("frame (") + to_string(setup_.method) + ")");
+    auto clean = gl_check(check_label_);
     if (!clean) return Error{clean.error()};
     return stats;
 }

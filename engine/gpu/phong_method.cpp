@@ -1,8 +1,11 @@
 #include "gpu/phong_method.hpp"
 
 #include <cstdio>
+#include <memory>
+#include <vector>
 
 #include "gpu/gl_check.hpp"
+#include "gpu/stone_method.hpp"
 
 namespace gem::gpu {
 
@@ -72,6 +75,42 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
     return gl_check("phong pass");
+}
+
+}  // namespace gem::gpu
+
+namespace gem::gpu {
+
+namespace {
+
+// The phong baseline as a stone method: one PhongMethod per kind of stone, drawn in order (a
+// piece's stones are not sorted: where two overlap on screen the later one shows).
+class PhongStones final : public StoneMethod {
+  public:
+    std::vector<std::unique_ptr<PhongMethod>> methods;
+
+    Result<bool> draw(const std::vector<StoneFrame>& frames, const std::vector<std::size_t>& kinds,
+                      FrameStats& stats) override {
+        (void)stats;
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            auto ok = methods[kinds[i]]->draw(frames[i]);
+            if (!ok) return ok;
+        }
+        return true;
+    }
+};
+
+}  // namespace
+
+Result<std::unique_ptr<StoneMethod>> make_phong_stones(const FrameSetup& setup,
+                                                       const std::vector<const Stone*>& kinds) {
+    auto method = std::make_unique<PhongStones>();
+    for (const Stone* kind : kinds) {
+        auto made = PhongMethod::make(*kind, setup.shading.h);
+        if (!made) return Error{made.error()};
+        method->methods.push_back(std::make_unique<PhongMethod>(std::move(made).value()));
+    }
+    return std::unique_ptr<StoneMethod>(std::move(method));
 }
 
 }  // namespace gem::gpu

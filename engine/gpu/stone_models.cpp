@@ -75,7 +75,7 @@ std::size_t first_within(const std::vector<double>& errors, double budget) {
 Result<std::vector<ModelChoice>> choose_stone_models(FrameRenderer& renderer, const Camera& view,
                                                      double budget) {
     std::vector<ModelChoice> choices;
-    if (renderer.method() != Method::trace) return choices;
+    if (!renderer.model(0)) return choices;  // a method without models
     const std::size_t hero = renderer.kind_of(0);
     const bool one_kind = renderer.kind_count() == 1;
     if (one_kind && renderer.stone_count() < 2) return choices;  // a loose stone is the hero
@@ -111,7 +111,7 @@ Result<std::vector<ModelChoice>> choose_stone_models(FrameRenderer& renderer, co
         ModelChoice choice;
         choice.kind = k;
         choice.width_px = 2.0 * radius / pixel_mm;
-        choice.configured = renderer.model(k);
+        choice.configured = *renderer.model(k);
         auto reference = draw(choice.configured);
         if (!reference) return Error{reference.error()};
         const std::vector<StoneModel> candidates = cheaper_models(choice.configured);

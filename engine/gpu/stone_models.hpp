@@ -43,8 +43,8 @@ struct ModelChoice {
 };
 
 // Chooses and sets the model of every kind but the centre stone's (see above) for `view`,
-// drawing off screen (the caller's framebuffer and viewport are kept). Trace only: for the
-// other methods nothing is chosen and the list is empty.
+// drawing off screen (the caller's framebuffer and viewport are kept). For a method without
+// models (StoneMethod::model: all but the trace) nothing is chosen and the list is empty.
 Result<std::vector<ModelChoice>> choose_stone_models(FrameRenderer& renderer, const Camera& view,
                                                      double budget = kStoneModelBudgetDeltaE);
 

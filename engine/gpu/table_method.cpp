@@ -6,6 +6,7 @@
 
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/stone_method.hpp"
 #include "gpu/texel_array.hpp"
 
 namespace gem::gpu {
@@ -270,6 +271,50 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     stats.blend = v1 != nullptr ? blend : 1.0;
     if (stats_out != nullptr) *stats_out = stats;
     return gl_check("table method");
+}
+
+}  // namespace gem::gpu
+
+namespace gem::gpu {
+
+namespace {
+
+// The table method as a stone method: the one loose stone its database holds, its views
+// streamed ahead of the turn by prepare().
+class TableStones final : public StoneMethod {
+  public:
+    explicit TableStones(TableMethod table) : table_(std::move(table)) {}
+
+    void prepare(const Camera& camera, const glm::dvec3& omega, bool wait) override {
+        const double pixels_across = table_.database().camera().field_mm / camera.pixel_size();
+        table_.cache().prefetch(-camera.forward(), omega, table_.level_for(pixels_across));
+        if (wait) table_.cache().wait_idle(std::chrono::seconds(60));
+    }
+
+    Result<bool> draw(const std::vector<StoneFrame>& frames, const std::vector<std::size_t>& kinds,
+                      FrameStats& stats) override {
+        (void)kinds;
+        for (const StoneFrame& frame : frames) {
+            auto ok = table_.draw(frame, &stats.table);
+            if (!ok) return ok;
+        }
+        return true;
+    }
+
+  private:
+    TableMethod table_;
+};
+
+}  // namespace
+
+Result<std::unique_ptr<StoneMethod>> make_table_stones(const FrameSetup& setup,
+                                                       const std::vector<const Stone*>& kinds) {
+    (void)kinds;  // the database's stone
+    if (setup.database == nullptr)
+        return Error{"frame renderer: the table method needs a database"};
+    auto made = TableMethod::make(setup.database, setup.table);
+    if (!made) return Error{made.error()};
+    return std::unique_ptr<StoneMethod>(std::make_unique<TableStones>(std::move(made).value()));
 }
 
 }  // namespace gem::gpu

@@ -11,6 +11,7 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
+#include "gpu/stone_method.hpp"
 #include "render/camera.hpp"
 #include "trace/folded_exit.hpp"
 
@@ -247,6 +248,79 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");
+}
+
+}  // namespace gem::gpu
+
+namespace gem::gpu {
+
+namespace {
+
+// The trace as a stone method: one TraceMethod per kind of stone (its block and programs), each
+// kind traced with its own model (depth, fire), the setup's to begin with.
+class TraceStones final : public StoneMethod {
+  public:
+    explicit TraceStones(const FrameSetup& setup) : trace_(setup.trace) {}
+
+    Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
+        auto made = TraceMethod::make(stone);
+        if (!made) return Error{made.error()};
+        methods_.push_back(std::make_unique<TraceMethod>(std::move(made).value()));
+        convex_.push_back(stone.convex);
+        models_.push_back(model);
+        settings_.push_back(trace_);
+        settings_.back().max_depth = model.depth;
+        return true;
+    }
+
+    Result<bool> draw(const std::vector<StoneFrame>& frames, const std::vector<std::size_t>& kinds,
+                      FrameStats& stats) override {
+        (void)stats;
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            const std::size_t k = kinds[i];
+            auto ok = methods_[k]->draw(frames[i], settings_[k], models_[k].fire);
+            if (!ok) return ok;
+        }
+        return true;
+    }
+
+    std::optional<StoneModel> model(std::size_t kind) const override { return models_[kind]; }
+    void set_model(std::size_t kind, const StoneModel& model) override {
+        models_[kind] = model;
+        settings_[kind].max_depth = model.depth;
+    }
+    Result<bool> draw_alone(std::size_t kind, const StoneFrame& frame,
+                            const StoneModel& model) override {
+        TraceSettings trace = trace_;
+        trace.max_depth = model.depth;
+        return methods_[kind]->draw(frame, trace, model.fire);
+    }
+
+    std::string describe() const override {
+        if (!convex_.front()) return "the first stone's triangles tested (not convex)";
+        const TraceMethod& first = *methods_.front();
+        return std::string("exits by ") + to_string(first.exit_search()) +
+               " (64x64 test: " + first.measurement() + ")";
+    }
+
+  private:
+    TraceSettings trace_;
+    std::vector<std::unique_ptr<TraceMethod>> methods_;
+    std::vector<bool> convex_;
+    std::vector<StoneModel> models_;
+    std::vector<TraceSettings> settings_;  // the setup's, at each kind's model's depth
+};
+
+}  // namespace
+
+Result<std::unique_ptr<StoneMethod>> make_trace_stones(const FrameSetup& setup,
+                                                       const std::vector<const Stone*>& kinds) {
+    auto method = std::make_unique<TraceStones>(setup);
+    for (const Stone* kind : kinds) {
+        auto added = method->add_kind(*kind, {setup.trace.max_depth, setup.trace_dispersion});
+        if (!added) return Error{added.error()};
+    }
+    return std::unique_ptr<StoneMethod>(std::move(method));
 }
 
 }  // namespace gem::gpu

@@ -10,6 +10,7 @@
 #include <limits>
 #include <numbers>
 
+#include "app/kiosk_frame.hpp"
 #include "app/method_probe_run.hpp"
 #include "app/process_info.hpp"
 #include "app/snapshot.hpp"
@@ -26,19 +27,6 @@ namespace {
 
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
-
-gpu::Method to_gpu(RenderMethod method) {
-    switch (method) {
-        case RenderMethod::trace:
-            return gpu::Method::trace;
-        case RenderMethod::phong:
-            return gpu::Method::phong;
-        case RenderMethod::table:
-        case RenderMethod::automatic:  // until the probe has chosen
-            break;
-    }
-    return gpu::Method::table;
-}
 
 CatalogueOptions catalogue_options(const KioskConfig& config) {
     CatalogueOptions options;
@@ -81,7 +69,8 @@ Result<bool> KioskSession::configure() {
     if (run_.snapshot_dir) config_.snapshot.dir = *run_.snapshot_dir;
     if (run_.snapshot_every) config_.snapshot.every_n_frames = *run_.snapshot_every;
 
-    render_.method = to_gpu(config_.render.method);
+    // "auto" draws with the table until the probe has chosen.
+    render_.method = config_.render.method == kAutoMethod ? "table" : config_.render.method;
     render_.blend = config_.render.blend;
     render_.cube_face = config_.render.cube_face;
     render_.depth = config_.render.depth;
@@ -293,14 +282,14 @@ void KioskSession::rebuild_scene(double now_s) {
     scene_stale_ = false;
     scene_.reset();  // the old scene's GL objects go before the new one's are made
     if (!selection_->has_stone()) return;
-    if (config_.render.method == RenderMethod::automatic) choose_render_method();
+    if (config_.render.method == kAutoMethod) choose_render_method();
     frames_since_scene_ = 0;
     // A design whose tables are built and checked is drawn from them (design_tables.hpp).
     CatalogueStone stone = selection_->stone();
     RenderChoice render = render_;
     if (auto tables = design_tables_->tables_for(stone)) {
         stone.opened = std::move(tables);
-        render.method = gpu::Method::table;
+        render.method = "table";
     }
     auto made = StoneScene::make(stone, selection_->look(), render);
     if (!made) {
@@ -322,11 +311,8 @@ void KioskSession::rebuild_scene(double now_s) {
     } else {
         log_error(models.error() + "; the stones not measured keep the configured model");
     }
-    if (const gpu::TraceMethod* trace = scene_->renderer().trace();
-        trace != nullptr && scene_->renderer().stone().convex) {
-        log_info(std::string("trace: exits by ") + gpu::to_string(trace->exit_search()) +
-                 " (64x64 test: " + trace->measurement() + ")");
-    }
+    const std::string settled = scene_->renderer().method().describe();
+    if (!settled.empty()) log_info(scene_->renderer().method_name() + ": " + settled);
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }
 
@@ -424,39 +410,23 @@ std::string KioskSession::chosen_name(const ProbeResult& probe) {
     return probe.candidates[probe.choice.index].name;
 }
 
-double KioskSession::draw_stone(double now_s, FrameRecord& record) {
-    gpu::FrameRenderer& renderer = scene_->renderer();
+std::optional<Camera> KioskSession::view_camera(double now_s, glm::dvec3& omega) {
     auto camera =
         scene_->camera(gestures_->view(), display_->picture_size(), scene_picture_->jitter_ndc());
     if (!camera) {
         log_error("camera: " + camera.error());
-        return 0.0;
+        return std::nullopt;
     }
-    if (gpu::TableMethod* table = renderer.table()) {
-        // The view direction's rotation since the last frame, as an angular velocity, lets the
-        // cache decode the views the turn will reach before it reaches them.
-        const glm::dvec3 forward = camera.value().forward();
-        glm::dvec3 omega(0.0);
-        if (last_forward_s_ >= 0.0 && now_s > last_forward_s_) {
-            omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
-        }
-        last_forward_ = forward;
-        last_forward_s_ = now_s;
-        table->cache().prefetch(
-            -forward, omega,
-            table->level_for(table->database().camera().field_mm / camera.value().pixel_size()));
+    // The view direction's rotation since the last frame, as an angular velocity, lets the
+    // stone method prepare for the views the turn will reach before it reaches them.
+    const glm::dvec3 forward = camera.value().forward();
+    omega = glm::dvec3(0.0);
+    if (last_forward_s_ >= 0.0 && now_s > last_forward_s_) {
+        omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
     }
-    // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
-    auto stats =
-        renderer.render(camera.value(), config_.display.backend != "drm" ? gpu::FrameWait::frame
-                                                                         : gpu::FrameWait::none);
-    if (!stats) {
-        log_error(stats.error());
-        return 0.0;
-    }
-    const gpu::TableFrameStats& t = stats.value().table;
-    record.streaming_ms = t.acquire_ms + t.upload_ms + t.wait_ms;
-    return stats.value().cpu_ms;
+    last_forward_ = forward;
+    last_forward_s_ = now_s;
+    return camera.value();
 }
 
 Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
@@ -480,12 +450,20 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     record.start_s = monotonic_now_s();
     last_frame_start_s_ = record.start_s;
     if (redraw) {
-        scene_picture_->bind();
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        if (scene_) draw_stone(now_s, record);
-        auto finished = scene_picture_->finish(*picture_);
-        if (!finished) return Error{finished.error()};
+        glm::dvec3 omega(0.0);
+        std::optional<Camera> camera;
+        if (scene_) camera = view_camera(now_s, omega);
+        // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
+        const gpu::FrameWait wait =
+            config_.display.backend != "drm" ? gpu::FrameWait::frame : gpu::FrameWait::none;
+        auto drawn = draw_kiosk_frame(scene_.get(), camera ? &*camera : nullptr, omega, wait,
+                                      *scene_picture_, *picture_);
+        if (!drawn) return Error{drawn.error()};
+        if (!drawn.value().scene_error.empty()) log_error(drawn.value().scene_error);
+        if (const auto& stats = drawn.value().stats) {
+            const gpu::TableFrameStats& t = stats->table;
+            record.streaming_ms = t.acquire_ms + t.upload_ms + t.wait_ms;
+        }
         auto faded = crossfade_->draw(*picture_, now_s);
         if (!faded) return Error{faded.error()};
     }

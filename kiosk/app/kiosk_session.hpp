@@ -73,7 +73,8 @@ class KioskSession {
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
-    double draw_stone(double now_s, FrameRecord& record);
+    // The camera for the gestures' view this frame, and in `omega` how fast the view turns.
+    std::optional<Camera> view_camera(double now_s, glm::dvec3& omega);
     static bool same_view(const ViewState& a, const ViewState& b);
 
     KioskRun run_;

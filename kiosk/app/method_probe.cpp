@@ -11,15 +11,15 @@ namespace gem::kiosk {
 
 std::vector<MethodCandidate> method_ladder(int needed_level, bool dispersion) {
     std::vector<MethodCandidate> ladder;
-    if (dispersion) ladder.push_back({gpu::Method::trace, false, -1, "trace exact fire", true});
-    ladder.push_back({gpu::Method::trace, false, -1, "trace"});
-    ladder.push_back({gpu::Method::table, true, -1, "table blend"});
-    ladder.push_back({gpu::Method::table, false, -1, "table nearest"});
+    if (dispersion) ladder.push_back({"trace", false, -1, "trace exact fire", true});
+    ladder.push_back({"trace", false, -1, "trace"});
+    ladder.push_back({"table", true, -1, "table blend"});
+    ladder.push_back({"table", false, -1, "table nearest"});
     if (needed_level > 0) {
-        ladder.push_back({gpu::Method::table, false, needed_level - 1,
+        ladder.push_back({"table", false, needed_level - 1,
                           "table nearest level " + std::to_string(needed_level - 1)});
     }
-    ladder.push_back({gpu::Method::phong, false, -1, "phong"});
+    ladder.push_back({"phong", false, -1, "phong"});
     return ladder;
 }
 
@@ -32,7 +32,7 @@ std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms) {
 std::size_t refractive_rungs(const std::vector<MethodCandidate>& ladder) {
     return static_cast<std::size_t>(
         std::count_if(ladder.begin(), ladder.end(),
-                      [](const MethodCandidate& c) { return c.method != gpu::Method::phong; }));
+                      [](const MethodCandidate& c) { return c.method != "phong"; }));
 }
 
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,

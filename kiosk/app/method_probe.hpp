@@ -16,7 +16,7 @@ namespace gem::kiosk {
 
 // One way to draw the stone, as the probe tries it.
 struct MethodCandidate {
-    gpu::Method method = gpu::Method::table;
+    std::string method = "table";  // a stone method by its registry name (gpu/stone_method.hpp)
     bool blend = false;
     int max_level = -1;       // table: highest ray-table level shown; -1: the level the size needs
     std::string name;         // for the log line, e.g. "table blend"

@@ -1,10 +1,9 @@
 #include "app/method_probe_run.hpp"
 
-#include <GLES3/gl3.h>
-
 #include <chrono>
 #include <cmath>
 
+#include "app/kiosk_frame.hpp"
 #include "app/process_info.hpp"
 #include "render/camera.hpp"
 
@@ -24,7 +23,6 @@ Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, dou
 std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
                             gpu::RenderTarget& target, const ViewState& start, double budget_ms,
                             const ProbeOptions& options) {
-    gpu::FrameRenderer& renderer = scene.renderer();
     const int total = options.warmup_frames + options.frames;
     const int allowed_misses =
         options.frames -
@@ -36,23 +34,17 @@ std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
     for (int i = 0; i < total; ++i) {
         auto camera = probe_camera(scene, start, options.turn_deg_per_frame * i, target);
         if (!camera) break;
-        scene_picture.bind();
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        // As the kiosk's draw does: the turn's angular velocity lets the stone method prepare
+        // ahead (the table streams the way a drag does).
+        const glm::dvec3 forward = camera.value().forward();
+        const glm::dvec3 omega =
+            i > 0 ? glm::cross(last_forward, forward) / frame_s : glm::dvec3(0.0);
+        last_forward = forward;
         const auto begin = std::chrono::steady_clock::now();
-        if (gpu::TableMethod* table = renderer.table()) {
-            // As the kiosk's draw does: the turn's angular velocity lets the cache decode
-            // ahead, so the probe streams the way a drag does.
-            const glm::dvec3 forward = camera.value().forward();
-            const glm::dvec3 omega =
-                i > 0 ? glm::cross(last_forward, forward) / frame_s : glm::dvec3(0.0);
-            last_forward = forward;
-            table->cache().prefetch(-forward, omega,
-                                    table->level_for(table->database().camera().field_mm /
-                                                     camera.value().pixel_size()));
-        }
-        auto stats = renderer.render(camera.value(), gpu::FrameWait::none);
-        const bool finished = stats && scene_picture.finish(target);
+        // The kiosk's own frame (kiosk_frame.hpp), waited for to the end of the GPU's work.
+        auto drawn = draw_kiosk_frame(&scene, &camera.value(), omega, gpu::FrameWait::frame,
+                                      scene_picture, target);
+        const bool finished = drawn && drawn.value().scene_error.empty();
         glFinish();
         const double ms =
             std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
@@ -100,7 +92,7 @@ Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice&
         // material disperses (the fire a design shows, stone_scene.cpp).
         result.candidates = method_ladder(0, first.value()->stone().material.disperses());
         std::erase_if(result.candidates,
-                      [](const MethodCandidate& c) { return c.method != gpu::Method::trace; });
+                      [](const MethodCandidate& c) { return c.method != "trace"; });
     }
     result.frame_ms.resize(result.candidates.size());
     std::unique_ptr<StoneScene> scene = std::move(first).value();

@@ -3,6 +3,7 @@
 #include <numbers>
 
 #include "app/start_view.hpp"
+#include "gpu/stone_method.hpp"
 #include "gpu/stone_models.hpp"
 #include "piece/metal_obj.hpp"
 #include "scene/scene.hpp"
@@ -74,10 +75,13 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     scene->environment_ = std::move(environment).value();
 
     gpu::FrameSetup setup;
-    // A design or a piece is drawn by the exact trace, which needs no tables (phong, the
-    // baseline, draws either).
-    setup.method = scene->database_ || render.method == gpu::Method::phong ? render.method
-                                                                           : gpu::Method::trace;
+    // A design or a piece is drawn by the exact trace, which needs no tables, where the
+    // configured method cannot draw it (phong, the baseline, draws either).
+    const gpu::MethodEntry* chosen = gpu::find_stone_method(render.method);
+    if (chosen == nullptr) return fail("no stone method '" + render.method + "'");
+    const bool drawable = scene->piece_ ? chosen->draws_pieces
+                                        : scene->database_ != nullptr || !chosen->needs_database;
+    setup.method = drawable ? render.method : "trace";
     setup.piece = scene->piece_.get();
     setup.database = scene->database_;
     setup.stone = geometry;
@@ -87,7 +91,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
     setup.shading.lights = look.lights;
     // The phong baseline draws the stone with opacity 1 − α; the physical model's α = 1 would
     // leave only the ring on screen. 0.8 is the scene default gemrender uses (scene/scene.hpp).
-    if (setup.method == gpu::Method::phong) setup.shading.alpha = Scene{}.alpha;
+    if (setup.method == "phong") setup.shading.alpha = Scene{}.alpha;
     setup.trace.max_depth = render.depth;
     // Fire where the database stores it: each colour channel traced at its own index, or as
     // the tables show it, each exit's channels moved by their direction's derivative.

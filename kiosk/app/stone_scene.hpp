@@ -36,7 +36,7 @@ struct LookChoice {
 };
 
 struct RenderChoice {
-    gpu::Method method = gpu::Method::table;
+    std::string method = "table";  // a stone method by its registry name (gpu/stone_method.hpp)
     bool blend = false;
     int cube_face = 256;
     int depth = 8;  // trace: internal segments followed

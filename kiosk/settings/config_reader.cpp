@@ -120,6 +120,11 @@ bool ConfigReader::positive(const toml::node& node, std::string_view key, double
 
 bool ConfigReader::choice(const toml::node& node, std::string_view key,
                           std::initializer_list<std::string_view> names, std::size_t& index) {
+    return choice(node, key, std::span<const std::string_view>(names.begin(), names.size()), index);
+}
+
+bool ConfigReader::choice(const toml::node& node, std::string_view key,
+                          std::span<const std::string_view> names, std::size_t& index) {
     if (const auto text = node.value<std::string_view>()) {
         for (std::size_t i = 0; i < names.size(); ++i) {
             if (names.begin()[i] == *text) {

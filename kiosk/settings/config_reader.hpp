@@ -42,6 +42,8 @@ class ConfigReader {
     // One of `names`; `index` receives its position.
     bool choice(const toml::node& node, std::string_view key,
                 std::initializer_list<std::string_view> names, std::size_t& index);
+    bool choice(const toml::node& node, std::string_view key,
+                std::span<const std::string_view> names, std::size_t& index);
     bool strings(const toml::node& node, std::string_view key, std::vector<std::string>& out);
     bool numbers(const toml::node& node, std::string_view key, std::span<double> out);
     bool vec3(const toml::node& node, std::string_view key, glm::dvec3& out);

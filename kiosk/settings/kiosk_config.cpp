@@ -55,20 +55,6 @@ void read_top(ConfigReader& r, const toml::table& root, KioskConfig& config) {
 
 }  // namespace
 
-const char* to_string(RenderMethod method) {
-    switch (method) {
-        case RenderMethod::table:
-            return "table";
-        case RenderMethod::trace:
-            return "trace";
-        case RenderMethod::phong:
-            return "phong";
-        case RenderMethod::automatic:
-            return "auto";
-    }
-    return "?";
-}
-
 const char* to_string(DesignTablesMode mode) {
     switch (mode) {
         case DesignTablesMode::automatic:

@@ -22,13 +22,13 @@ namespace gem::kiosk {
 inline constexpr const char* kDefaultConfigFile = "/etc/gemkiosk/gemkiosk.toml";
 
 // [render]: how the stone is shaded (docs/design.md, "Methods side by side").
-// automatic ("auto"): the most accurate of trace, table blend, table nearest, table one level
-// lower and phong that holds the frame rate, measured at start (app/method_probe.hpp).
-enum class RenderMethod { table, trace, phong, automatic };
-const char* to_string(RenderMethod method);
+// method: a stone method by its name in the registry (gpu/stone_method.hpp), or "auto": the
+// most accurate of trace, table blend, table nearest, table one level lower and phong that
+// holds the frame rate, measured at start (app/method_probe.hpp).
+inline constexpr const char* kAutoMethod = "auto";
 
 struct RenderConfig {
-    RenderMethod method = RenderMethod::automatic;
+    std::string method = kAutoMethod;
     bool blend = false;        // table: blend the two nearest stored views, else the nearest
     int cube_face = 256;       // virtual-cube face size, texels
     int depth = 8;             // trace: internal ray segments followed per branch

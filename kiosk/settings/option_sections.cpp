@@ -4,7 +4,10 @@
 #include <cassert>
 #include <charconv>
 #include <optional>
+#include <string_view>
+#include <vector>
 
+#include "gpu/stone_method.hpp"
 #include "settings/config_sections.hpp"
 
 namespace gem::kiosk {
@@ -170,11 +173,13 @@ constexpr KeySpec<GestureOptions> kAttractKeys[] = {
 constexpr KeySpec<RenderConfig> kRenderKeys[] = {
     {"method",
      [](ConfigReader& r, const Node& n, Key k, RenderConfig& o) {
+         // The registry's methods, then "auto".
+         std::vector<std::string_view> names;
+         for (const gpu::MethodEntry& m : gpu::stone_methods()) names.push_back(m.name);
+         names.push_back(kAutoMethod);
          std::size_t i = 0;
-         if (!r.choice(n, k, {"table", "trace", "phong", "auto"}, i)) return;
-         constexpr RenderMethod methods[] = {RenderMethod::table, RenderMethod::trace,
-                                             RenderMethod::phong, RenderMethod::automatic};
-         o.method = methods[i];
+         if (!r.choice(n, k, names, i)) return;
+         o.method = std::string(names[i]);
      }},
     {"blend",
      [](ConfigReader& r, const Node& n, Key k, RenderConfig& o) { r.boolean(n, k, o.blend); }},

@@ -42,7 +42,7 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 namespace fs = std::filesystem;
-using gem::gpu::Method;
+
 using gem::gpu::TraceDispersion;
 
 constexpr int kTraceDepth = 7;  // the depth the figures of the peer tracer were taken at
@@ -83,7 +83,7 @@ constexpr double kStoneShare = 0.25;  // config/gemkiosk.toml: [picture] stone_s
 
 struct Case {
     const char* name;
-    Method method;
+    std::string method;
     bool blend = false;
     int depth = kTraceDepth;
     TraceDispersion dispersion = TraceDispersion::none;
@@ -139,7 +139,7 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
                                       const gem::MetalMesh& ring) {
     gem::gpu::FrameSetup setup;
     setup.method = c.method;
-    setup.database = c.method == Method::table ? db : nullptr;
+    setup.database = c.method == "table" ? db : nullptr;
     setup.stone = stone;
     setup.material = stone.material;
     setup.shading.lights = {{{20.0, 60.0, 40.0}, false, {2.0, 2.0, 2.0}},
@@ -159,13 +159,9 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
 
 // One frame of one method, timed: the whole frame and its stone pass alone.
 gem::gpu::FrameStats draw(gem::gpu::FrameRenderer& renderer, const gem::Camera& camera) {
-    if (auto* table = renderer.table()) {
-        const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
-        table->cache().prefetch(
-            -camera.forward(), {0.0, omega, 0.0},
-            table->level_for(table->database().camera().field_mm / camera.pixel_size()));
-        table->cache().wait_idle(std::chrono::seconds(60));  // decoding is not shading
-    }
+    // Prepared and waited for: decoding (the table's) is not shading.
+    const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
+    renderer.prepare(camera, {0.0, omega, 0.0}, true);
     auto stats = renderer.render(camera, gem::gpu::FrameWait::passes);
     if (!stats) {
         std::fprintf(stderr, "bench_gpu: %s\n", stats.error().c_str());
@@ -237,13 +233,13 @@ int main(int argc, char** argv) {
                                {"1024² zoom 0.25", 1024, 1024, 0.25, 40.0, false},
                                {"kiosk 1080p ring", 1920, 1080, 1.0, 40.0, true}};
     std::vector<Case> cases = {
-        {"phong", Method::phong},
-        {"table nearest", Method::table},
-        {"table blend", Method::table, true},
-        {"trace depth 7", Method::trace},
-        {"trace depth 8", Method::trace, false, kKioskDepth},
-        {"trace 7 fire 1st order", Method::trace, false, kTraceDepth, TraceDispersion::first_order},
-        {"trace 7 fire exact", Method::trace, false, kTraceDepth, TraceDispersion::exact}};
+        {"phong", "phong"},
+        {"table nearest", "table"},
+        {"table blend", "table", true},
+        {"trace depth 7", "trace"},
+        {"trace depth 8", "trace", false, kKioskDepth},
+        {"trace 7 fire 1st order", "trace", false, kTraceDepth, TraceDispersion::first_order},
+        {"trace 7 fire exact", "trace", false, kTraceDepth, TraceDispersion::exact}};
     if (quick) views = {views[0], views[3]};
 
     auto heart =
@@ -253,22 +249,20 @@ int main(int argc, char** argv) {
         std::vector<View> views;
         std::vector<Case> cases;
     };
-    std::vector<Subject> subjects = {
-        {&stone.value(), views, cases},
-        {&heart.value(),
-         {{"heart 1024² z 1", 1024, 1024, 1.0, 40.0, false},
-          {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
-         {{"phong", Method::phong}, {"trace depth 7 (mesh)", Method::trace}}}};
+    std::vector<Subject> subjects = {{&stone.value(), views, cases},
+                                     {&heart.value(),
+                                      {{"heart 1024² z 1", 1024, 1024, 1.0, 40.0, false},
+                                       {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
+                                      {{"phong", "phong"}, {"trace depth 7 (mesh)", "trace"}}}};
     if (quick) subjects.resize(1);
     for (Subject& st : subjects) {
         std::erase_if(st.cases, [&](const Case& c) {
-            return c.method != Method::phong &&
-                   std::string(c.name).find(methods) == std::string::npos;
+            return c.method != "phong" && std::string(c.name).find(methods) == std::string::npos;
         });
     }
     // The database takes most of a short run to build: only when a table method draws.
-    const bool tables = std::ranges::any_of(
-        subjects.front().cases, [](const Case& c) { return c.method == Method::table; });
+    const bool tables = std::ranges::any_of(subjects.front().cases,
+                                            [](const Case& c) { return c.method == "table"; });
     const auto db = tables ? build_database(stone.value(), kTraceDepth) : nullptr;
 
     std::printf("%-18s %-24s %9s %9s %9s %8s %10s %8s\n", "view", "method", "ms/frame", "stone ms",
@@ -280,7 +274,7 @@ int main(int argc, char** argv) {
             // its outline).
             auto probe = gem::gpu::FrameRenderer::make([&] {
                 gem::gpu::FrameSetup s;
-                s.method = Method::phong;
+                s.method = "phong";
                 s.stone = *st.stone;
                 s.environment = &environment;
                 if (v.ring) s.ring = &ring.value();

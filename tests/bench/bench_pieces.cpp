@@ -139,7 +139,7 @@ int main(int argc, char** argv) {
     gem::kiosk::LookChoice look;
     look.lights = {{{-30.0, 80.0, 45.0}, false, {2.0, 2.0, 2.0}}};
     gem::kiosk::RenderChoice render;
-    render.method = gem::gpu::Method::trace;
+    render.method = "trace";
     render.exact_fire = exact_fire;
     render.depth = depth;
 

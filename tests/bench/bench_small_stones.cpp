@@ -72,7 +72,7 @@ int main(int argc, char** argv) {
     const std::vector<int> depths = {1, 2, 3, 4, 6, 8};
 
     gem::gpu::FrameSetup setup;
-    setup.method = gem::gpu::Method::trace;
+    setup.method = "trace";
     setup.stone = stone;
     setup.material = stone.material;
     setup.shading.lights = lights;

@@ -63,7 +63,7 @@ TEST(GpuPicture, TheFinishPassToneMapsAsTheCpuDoes) {
 Image draw_diamond(int size, int samples, glm::dvec2 shift = glm::dvec2(0.0)) {
     static const Environment environment = Environment::uniform(glm::dvec3(0.4));
     gpu::FrameSetup setup;
-    setup.method = gpu::Method::phong;
+    setup.method = "phong";
     setup.stone =
         make_cut(default_cut_params(CutShape::round_brilliant), find_material("diamond").value())
             .value();

@@ -14,6 +14,7 @@
 #include "gpu/render_target.hpp"
 #include "gpu_test_support.hpp"
 #include "piece/piece_file.hpp"
+#include "render/image_error.hpp"
 #include "render/reference_render.hpp"
 
 namespace gem {
@@ -51,7 +52,7 @@ Image draw_on_gpu(const Piece* piece, const Stone* loose, double framing_mm,
     const Environment environment = Environment::studio();
     const RenderSettings s = settings();
     gpu::FrameSetup setup;
-    setup.method = gpu::Method::trace;
+    setup.method = "trace";
     setup.piece = piece;
     if (loose != nullptr) {
         setup.stone = *loose;
@@ -122,23 +123,42 @@ TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     ASSERT_TRUE(reference) << reference.error();
     const Image gpu = draw_on_gpu(&halo.value(), nullptr, framing, s.camera);
     const Image bare = draw_on_gpu(&without_small, nullptr, framing, s.camera);
-    // PSNR over the pixels a mask's stones cover (alpha from a reference of them alone).
-    auto psnr_over = [&](const Piece& stones, const Image& a) {
+    // Each class of pixels (the centre stone, the small stones, the metal) by masks: a stone
+    // class where a reference of those stones alone covers the pixel, the metal where the whole
+    // piece's reference does and no stone's.
+    auto mask_of = [&](const Piece& stones) {
         auto mask = render_piece_reference(stones, Environment::studio(), s);
         EXPECT_TRUE(mask) << mask.error();
-        Image x = a, y = reference.value();
-        for (int j = 0; j < x.height; ++j) {
-            for (int i = 0; i < x.width; ++i) x.at(i, j).w = y.at(i, j).w = mask.value().at(i, j).w;
-        }
-        return gpu_test::psnr_srgb8(x, y, true);
+        return mask ? mask.value() : Image{};
     };
-    const double centre = psnr_over(centre_alone, gpu);
-    const double small = psnr_over(small_alone, gpu);
-    const double small_missing = psnr_over(small_alone, bare);
+    const Image centre_mask = mask_of(centre_alone), small_mask = mask_of(small_alone);
+    Image metal_mask = reference.value();
+    for (std::size_t i = 0; i < metal_mask.pixels.size(); ++i) {
+        const bool stone = centre_mask.pixels[i].w > 0.5f || small_mask.pixels[i].w > 0.5f;
+        metal_mask.pixels[i].w = stone ? 0.0f : metal_mask.pixels[i].w;
+    }
+    struct Class {
+        double psnr = 0.0, delta_e = 0.0;
+    };
+    auto over = [&](const Image& mask, const Image& a) {
+        Image x = a, y = reference.value();
+        for (std::size_t i = 0; i < x.pixels.size(); ++i) {
+            x.pixels[i].w = y.pixels[i].w = mask.pixels[i].w;
+        }
+        ErrorOptions only_stone;
+        only_stone.only_stone = true;
+        auto e = compare_images(x, y, only_stone);
+        EXPECT_TRUE(e) << e.error();
+        return Class{gpu_test::psnr_srgb8(x, y, true), e ? e.value().delta_e_mean : 0.0};
+    };
+    const Class centre_c = over(centre_mask, gpu), small_c = over(small_mask, gpu),
+                metal_c = over(metal_mask, gpu), missing_c = over(small_mask, bare);
+    const double centre = centre_c.psnr, small = small_c.psnr, small_missing = missing_c.psnr;
     std::printf(
-        "halo ring, GPU trace against the CPU reference: centre stone %.1f dB, small "
-        "stones %.1f dB (%.1f dB drawn without them)\n",
-        centre, small, small_missing);
+        "halo ring, GPU trace against the CPU reference: centre stone %.1f dB, mean ΔE00 %.1f; "
+        "small stones %.1f dB, %.1f (%.1f dB, %.1f drawn without them); metal %.1f dB, %.1f\n",
+        centre, centre_c.delta_e, small, small_c.delta_e, small_missing, missing_c.delta_e,
+        metal_c.psnr, metal_c.delta_e);
     if (small < small_missing + 1.0) {
         gpu_test::write_artifact(gpu, "piece_halo_gpu");
         gpu_test::write_artifact(reference.value(), "piece_halo_reference");

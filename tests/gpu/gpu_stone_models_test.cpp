@@ -55,7 +55,7 @@ struct Drawn {
 Drawn draw_halo(const Piece& halo, const CameraSettings& view, bool choose) {
     const Environment environment = Environment::studio();
     FrameSetup setup;
-    setup.method = Method::trace;
+    setup.method = "trace";
     setup.piece = &halo;
     setup.shading.lights = {{{20.0, 60.0, 40.0}, false, {2.0, 2.0, 2.0}}};
     setup.trace.max_depth = 8;

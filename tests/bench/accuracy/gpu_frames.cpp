@@ -35,7 +35,7 @@ Result<std::vector<GpuFrame>> render_gpu(const Scene& scene, const Environment& 
     setup.shading = scene_lights();
     // The baseline draws the stone with opacity 1 − α (phong.frag); α = 1, the physical
     // model's value, would leave it invisible. 0.8 is gemrender's default scene.
-    if (point.method == gpu::Method::phong) setup.shading.alpha = 0.8;
+    if (point.method == "phong") setup.shading.alpha = 0.8;
     setup.trace = point.trace;
     setup.table.blend = point.blend;
     setup.table.wait_for_views = true;

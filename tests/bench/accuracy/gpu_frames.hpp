@@ -25,7 +25,7 @@ namespace gem::accuracy {
 CameraSettings frame_camera(const Stone& stone, const glm::dvec3& view, int image);
 
 struct GpuPoint {
-    gpu::Method method = gpu::Method::table;
+    std::string method = "table";
     std::shared_ptr<const Database> database;  // table only
     bool blend = false;                        // table: two nearest views
     TraceSettings trace;                       // trace only: depth and threshold

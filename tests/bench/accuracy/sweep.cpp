@@ -46,7 +46,7 @@ Result<std::vector<GpuFrame>> table_rows(
     auto db = ctx.cache.get(scene.stone_name, scene.stone, config, scene.min_elevation_deg);
     if (!db) return Error{db.error()};
     GpuPoint point;
-    point.method = gpu::Method::table;
+    point.method = "table";
     point.database = db.value().database;
     point.blend = blend;
     std::vector<glm::dvec3> dirs;
@@ -83,7 +83,7 @@ Result<std::vector<GpuFrame>> table_rows(
 // trace (depth, threshold) or phong on `views`.
 Result<std::vector<GpuFrame>> gpu_rows(
     Context& ctx, const Scene& scene, const Environment& env, SceneReferences& refs,
-    const ViewGrid& base_grid, const char* study, gpu::Method method, int depth, double threshold,
+    const ViewGrid& base_grid, const char* study, std::string method, int depth, double threshold,
     const std::vector<std::pair<const char*, glm::dvec3>>& views) {
     GpuPoint point;
     point.method = method;
@@ -101,8 +101,8 @@ Result<std::vector<GpuFrame>> gpu_rows(
         row.scene = scene.name;
         row.view = views[i].first;
         row.offset_deg = base_grid.nearest(views[i].second).angle * kRadToDeg;
-        row.method = gpu::to_string(method);
-        if (method == gpu::Method::trace) {
+        row.method = method;
+        if (method == "trace") {
             row.depth = depth;
             row.threshold = threshold;
         }
@@ -180,7 +180,7 @@ Result<bool> quantisation_rows(Context& ctx, const Scene& scene, const Environme
     auto t = render_gpu(scene, env, table, {on}, ctx.options.image, 1);
     if (!t) return Error{t.error()};
     GpuPoint trace;
-    trace.method = gpu::Method::trace;
+    trace.method = "trace";
     trace.trace.max_depth = config.depth;
     trace.trace.min_weight = config.threshold;
     auto g = render_gpu(scene, env, trace, {on}, ctx.options.image, 1);
@@ -257,15 +257,14 @@ Result<std::vector<Row>> run_sweep(const SweepOptions& options) {
         if (!nearest) return Error{nearest.error()};
         auto blend = table_rows(ctx, scene, studio, refs, "blend", base, true, views);
         if (!blend) return Error{blend.error()};
-        auto trace = gpu_rows(ctx, scene, studio, refs, grid, "base", gpu::Method::trace,
-                              base.depth, base.threshold, views);
+        auto trace = gpu_rows(ctx, scene, studio, refs, grid, "base", "trace", base.depth,
+                              base.threshold, views);
         if (!trace) return Error{trace.error()};
-        auto phong =
-            gpu_rows(ctx, scene, studio, refs, grid, "base", gpu::Method::phong, 0, 0.0, views);
+        auto phong = gpu_rows(ctx, scene, studio, refs, grid, "base", "phong", 0, 0.0, views);
         if (!phong) return Error{phong.error()};
         for (const int depth : options.quick ? std::vector<int>{4} : std::vector<int>{2, 4, 12}) {
-            auto t = gpu_rows(ctx, scene, studio, refs, grid, "trace-depth", gpu::Method::trace,
-                              depth, base.threshold, views);
+            auto t = gpu_rows(ctx, scene, studio, refs, grid, "trace-depth", "trace", depth,
+                              base.threshold, views);
             if (!t) return Error{t.error()};
         }
         auto r = reference_rows(ctx, scene, refs, grid, on,

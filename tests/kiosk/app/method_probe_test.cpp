@@ -8,6 +8,7 @@
 #include <gtest/gtest.h>
 
 #include "app/method_probe.hpp"
+#include "gpu/stone_method.hpp"
 
 namespace gem::kiosk {
 namespace {
@@ -123,27 +124,34 @@ TEST(MethodProbe, AnUnlimitedBudgetTakesTheMostAccurate) {
 TEST(MethodProbe, TheLadderRunsFromTheMostAccurateToPhong) {
     const std::vector<MethodCandidate> top = method_ladder(2);
     ASSERT_EQ(top.size(), 5u);
-    EXPECT_EQ(top[0].method, gpu::Method::trace);  // exact at every view
-    EXPECT_EQ(top[1].method, gpu::Method::table);
+    EXPECT_EQ(top[0].method, "trace");  // exact at every view
+    EXPECT_EQ(top[1].method, "table");
     EXPECT_TRUE(top[1].blend);
     EXPECT_EQ(top[1].max_level, -1);
     EXPECT_FALSE(top[2].blend);
     EXPECT_EQ(top[2].max_level, -1);
     EXPECT_FALSE(top[3].blend);
     EXPECT_EQ(top[3].max_level, 1);  // one below the needed level 2
-    EXPECT_EQ(top[4].method, gpu::Method::phong);
+    EXPECT_EQ(top[4].method, "phong");
     // A database with dispersion gets exact fire first; the rest is the same ladder.
     const std::vector<MethodCandidate> fire = method_ladder(2, true);
     ASSERT_EQ(fire.size(), 6u);
-    EXPECT_EQ(fire[0].method, gpu::Method::trace);
+    EXPECT_EQ(fire[0].method, "trace");
     EXPECT_TRUE(fire[0].exact_fire);
     EXPECT_FALSE(fire[1].exact_fire);
-    EXPECT_EQ(fire[1].method, gpu::Method::trace);
-    EXPECT_EQ(fire[5].method, gpu::Method::phong);
+    EXPECT_EQ(fire[1].method, "trace");
+    EXPECT_EQ(fire[5].method, "phong");
     // At level 0 there is nothing coarser: no capped rung.
     const std::vector<MethodCandidate> bottom = method_ladder(0);
     ASSERT_EQ(bottom.size(), 4u);
-    EXPECT_EQ(bottom[3].method, gpu::Method::phong);
+    EXPECT_EQ(bottom[3].method, "phong");
+}
+
+// The ladder names its methods as the registry does, so each rung is a method this build has.
+TEST(MethodProbe, EveryRungIsARegisteredStoneMethod) {
+    for (const MethodCandidate& c : method_ladder(2, true)) {
+        EXPECT_NE(gpu::find_stone_method(c.method), nullptr) << c.name;
+    }
 }
 
 TEST(MethodProbe, TheLogLineNamesEveryCandidateAndTheChoice) {

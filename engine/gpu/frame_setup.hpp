@@ -1,0 +1,66 @@
+#pragma once
+// What a frame of the shading stage is made from (FrameSetup), how its stones are modelled
+// (StoneModel), what a frame waits for and what it measures: shared by the frame renderer
+// (frame_renderer.hpp) and the stone methods it draws with (stone_method.hpp).
+
+#include <memory>
+#include <optional>
+#include <string>
+
+#include "gpu/table_method.hpp"
+#include "gpu/trace_method.hpp"
+#include "piece/metal_mesh.hpp"
+#include "piece/piece.hpp"
+#include "render/environment.hpp"
+#include "render/shading.hpp"
+#include "trace/tracer.hpp"
+
+namespace gem::gpu {
+
+struct FrameSetup {
+    // The stone method, by its name in the registry (stone_method.hpp: "table", "trace",
+    // "phong").
+    std::string method = "table";
+    std::shared_ptr<const Database> database;  // table: the stone comes from it
+    Stone stone;                               // trace, phong (ignored by table)
+    Material material;                         // shading-time material (colour, absorption)
+    ShadingSettings shading;
+    TraceSettings trace;  // trace: depth, weights, threshold
+    TraceDispersion trace_dispersion = TraceDispersion::none;
+    TableOptions table;
+    // What surrounds everything; must outlive the renderer (an orthographic frame's background
+    // is its radiance along the view).
+    const Environment* environment = nullptr;
+    int cube_face = 512;                         // virtual-cube face size, texels
+    std::optional<glm::vec3> background_colour;  // else the environment shows behind
+    const MetalMesh* ring = nullptr;             // optional jewellery around the stone
+    // A method that draws pieces (trace, phong): a whole piece instead of `stone` and `ring`: every
+    // stone drawn in its own frame (identical stones share their method's programs and stone
+    // block), the piece's metal around them. Must outlive the renderer.
+    const Piece* piece = nullptr;
+};
+
+// How one kind of stone is traced: the depth followed and how fire is coloured. The frame
+// renderer starts every kind at the setup's (FrameSetup::trace, trace_dispersion); a piece's
+// small stones may be given less (stone_models.hpp chooses it by measurement).
+struct StoneModel {
+    int depth = 8;
+    TraceDispersion fire = TraceDispersion::none;
+    bool operator==(const StoneModel&) const = default;
+};
+
+// What render() waits for: nothing (a display's swap paces it), the whole frame (timing), or
+// each pass too (benchmarks: the stone pass timed alone; the extra waits cost time).
+enum class FrameWait { none, frame, passes };
+
+struct FrameStats {
+    double cpu_ms = 0.0;  // from the start of the frame to glFinish returning
+    // The stone pass alone, between a glFinish after the background and one after the stone
+    // (FrameWait::passes only; 0 otherwise): what the method costs, without the picture's
+    // other passes.
+    double stone_ms = 0.0;
+    double metal_ms = 0.0;  // the ring's or piece's metal pass alone, as stone_ms
+    TableFrameStats table;
+};
+
+}  // namespace gem::gpu

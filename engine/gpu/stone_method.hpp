@@ -1,0 +1,79 @@
+#pragma once
+// One interface for a way of shading stones (docs/design.md, "Methods side by side"). A method
+// is made from the scene once (the frame setup and the kinds of stone drawn) and draws a list of
+// stone instances each frame, each in its own frame (StoneFrame: placement, camera, cube). What
+// it needs before a frame (the table decodes the views a turn will reach) it does in prepare().
+// The registry maps a name to a maker: the kiosk's config, gemrender and the kiosk's method
+// probe find methods there, so adding a method is its file plus one line in
+// stone_method.cpp (and a rung in the probe's ladder, method_probe.cpp, if the kiosk is to
+// choose it by measurement).
+
+#include <cstddef>
+#include <memory>
+#include <optional>
+#include <span>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "geometry/stone.hpp"
+#include "gpu/frame_setup.hpp"
+#include "gpu/frame_uniforms.hpp"
+#include "render/camera.hpp"
+#include "util/result.hpp"
+
+namespace gem::gpu {
+
+class StoneMethod {
+  public:
+    virtual ~StoneMethod() = default;
+
+    // Before the frame at `camera`, the view turning at `omega` (rad/s, about the axis it
+    // points along): the table asks its cache for the views ahead; `wait`: until they are
+    // decoded (benchmarks, which time shading, not decoding). Others need nothing.
+    virtual void prepare(const Camera& camera, const glm::dvec3& omega, bool wait = false) {
+        (void)camera;
+        (void)omega;
+        (void)wait;
+    }
+    // Draws every stone: frames[i] is a stone of kind kinds[i] (an index into the kinds the
+    // method was made with), its camera and cube filled in, into the bound framebuffer.
+    virtual Result<bool> draw(const std::vector<StoneFrame>& frames,
+                              const std::vector<std::size_t>& kinds, FrameStats& stats) = 0;
+
+    // A method with models per kind of stone (the trace: depth and fire, stone_models.hpp);
+    // the others have none: model() is empty and draw_alone() refuses.
+    virtual std::optional<StoneModel> model(std::size_t kind) const {
+        (void)kind;
+        return std::nullopt;
+    }
+    virtual void set_model(std::size_t kind, const StoneModel& model) {
+        (void)kind;
+        (void)model;
+    }
+    // Draws `frame`'s stone (of kind `kind`) as `model` traces it.
+    virtual Result<bool> draw_alone(std::size_t kind, const StoneFrame& frame,
+                                    const StoneModel& model);
+
+    // How the method settled itself, for the log (the trace: how it finds exits and what the
+    // measurement gave); empty when there is nothing to say.
+    virtual std::string describe() const { return {}; }
+};
+
+struct MethodEntry {
+    std::string_view name;
+    bool needs_database = false;  // draws from ray-tables: a design or a piece cannot use it
+    bool draws_pieces = false;    // draws a piece's placed stones, not only a loose one
+    // `kinds`: the kinds of stone drawn (one for a loose stone), read while making (each
+    // draw's StoneFrame names its stone again).
+    Result<std::unique_ptr<StoneMethod>> (*make)(const FrameSetup& setup,
+                                                 const std::vector<const Stone*>& kinds) = nullptr;
+};
+
+// Every method this build has, from the most accurate to the cheapest.
+std::span<const MethodEntry> stone_methods();
+const MethodEntry* find_stone_method(std::string_view name);
+// "trace, table, phong": for messages about an unknown name.
+std::string stone_method_names();
+
+}  // namespace gem::gpu
