@@ -1,8 +1,7 @@
 #pragma once
 // The CPU side of the comparison: reference renders (render/reference_render.hpp) of a scene
-// with the GPU frame's exact camera, at the full reference settings or cheaper ones, and for
-// a ring scene the environment the stone sees (studio + ring), read back from the GPU's
-// virtual cube so the reference shows the ring's reflection as the GPU methods do.
+// with the GPU frame's exact camera, at the full reference settings or cheaper ones; a ring
+// scene is traced as a piece (the stone in its metal, render_piece_reference).
 
 #include "render/environment.hpp"
 #include "render/image.hpp"
@@ -24,16 +23,14 @@ inline ReferenceSettings full_reference() {
 }
 
 struct CpuFrame {
-    Image image;  // alpha: 1 where the (centre) ray hits the stone
+    Image image;  // alpha: 1 where the (centre) ray hits the stone (or, in a ring scene, metal)
     double seconds = 0.0;
 };
 
 Result<CpuFrame> render_cpu(const Scene& scene, const Environment& environment,
                             const glm::dvec3& view, int image, const ReferenceSettings& settings);
 
-// Studio + the scene's ring as seen from the stone's centre, as an equirectangular
-// environment (the GPU's ring cube, read back); the studio itself without a ring. Needs a
-// current GL context.
-Result<Environment> scene_environment(const Scene& scene, const Environment& studio);
+// Where the stone alone covers each pixel (1 or 0), whatever is in front of it.
+Result<std::vector<float>> stone_coverage(const Scene& scene, const glm::dvec3& view, int image);
 
 }  // namespace gem::accuracy

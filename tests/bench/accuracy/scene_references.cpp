@@ -19,10 +19,12 @@ Result<const SceneReferences::Entry*> SceneReferences::get(const glm::dvec3& vie
     if (!ref_nd) return Error{ref_nd.error()};
     auto ring = ring_coverage(scene_, gpu_env_, view, image_);
     if (!ring) return Error{ring.error()};
+    auto stone_mask = stone_coverage(scene_, view, image_);
+    if (!stone_mask) return Error{stone_mask.error()};
     Entry e;
     e.mask.resize(ring.value().size());
     for (std::size_t i = 0; i < e.mask.size(); ++i) {
-        const bool stone = ref.value().image.pixels[i].w > 0.5f;
+        const bool stone = stone_mask.value()[i] > 0.5f;
         e.mask[i] = stone && ring.value()[i] < 0.5f ? 1.0f : 0.0f;
     }
     e.reference = std::move(ref).value();
