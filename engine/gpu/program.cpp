@@ -95,7 +95,7 @@ Result<Program> Program::build(const ProgramSpec& spec) {
 }
 
 GLint Program::uniform(const char* name) const {
-    auto it = locations_.find(name);
+    auto it = locations_.find(std::string_view(name));
     if (it != locations_.end()) return it->second;
     const GLint location = glGetUniformLocation(program_.get(), name);
     locations_.emplace(name, location);

@@ -5,6 +5,7 @@
 // carry the driver's log.
 
 #include <cstdint>
+#include <functional>
 #include <initializer_list>
 #include <string>
 #include <string_view>
@@ -59,7 +60,16 @@ class Program {
     Program() = default;
     ProgramHandle program_;
     std::string name_;
-    mutable std::unordered_map<std::string, GLint> locations_;
+    // Looked up by the caller's string without making a std::string of it (heterogeneous
+    // lookup): a name longer than the small-string buffer would otherwise allocate on every
+    // uniform set of every frame.
+    struct NameHash {
+        using is_transparent = void;
+        std::size_t operator()(std::string_view s) const noexcept {
+            return std::hash<std::string_view>{}(s);
+        }
+    };
+    mutable std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
 };
 
 // The text of one embedded source; an error names a missing one.
