@@ -12,6 +12,7 @@
 #include <memory>
 #include <sstream>
 
+#include "app/kiosk_frame.hpp"
 #include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
 #include "app/start_view.hpp"
@@ -190,7 +191,9 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     render.stone_share = config.config.picture.stone_share;
     auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render);
     if (!scene) return Error{scene.error()};
-    gpu::FrameRenderer& renderer = scene.value()->renderer();
+    // A piece's small stones get their models as the kiosk gives them when it makes a scene.
+    auto models = scene.value()->choose_stone_models({kWidth, kHeight});
+    if (!models) return Error{models.error()};
     auto target = gpu::RenderTarget::make(kWidth, kHeight);
     if (!target) return Error{target.error()};
     // The picture's finishing passes, as the kiosk's config sets them, and the frames a still
@@ -204,13 +207,11 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
         picture.begin_frame(true);
         auto camera = scene.value()->camera(view, {kWidth, kHeight}, picture.jitter_ndc());
         if (!camera) return Error{camera.error()};
-        picture.bind();
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        auto drawn = renderer.render(camera.value(), gpu::FrameWait::frame);
+        // The kiosk's own frame (app/kiosk_frame.hpp), still: no turn to prepare for.
+        auto drawn = kiosk::draw_kiosk_frame(scene.value().get(), &camera.value(), glm::dvec3(0.0),
+                                             gpu::FrameWait::frame, picture, target.value());
         if (!drawn) return Error{drawn.error()};
-        auto finished = picture.finish(target.value());
-        if (!finished) return Error{finished.error()};
+        if (!drawn.value().scene_error.empty()) return Error{drawn.value().scene_error};
     }
     return target.value().read();
 }
