@@ -1,8 +1,8 @@
 #pragma once
 // One frame of the shading stage, whatever the method: background, stone layer (a stone method
 // from the registry, stone_method.hpp: a loose stone, or every stone of a piece), ring or the
-// piece's metal,
-// composited with alpha and depth into the bound framebuffer (docs/design.md, "Data flow").
+// piece's metal, composited with alpha and depth into the bound framebuffer (docs/design.md,
+// "Data flow").
 // gemrender and the kiosk both draw through it. With metal, the virtual cube shows it around
 // the stones: its six faces are rendered from the centre (the loose stone's, the piece's) when
 // the scene changes (make() and set_lights()), not every frame.

@@ -23,6 +23,8 @@ Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, dou
 std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
                             gpu::RenderTarget& target, const ViewState& start, double budget_ms,
                             const ProbeOptions& options) {
+    // A piece's small stones modelled as the kiosk models them when it shows the scene.
+    if (!scene.choose_stone_models({target.width(), target.height()})) return {};
     const int total = options.warmup_frames + options.frames;
     const int allowed_misses =
         options.frames -
