@@ -4,6 +4,7 @@
 #include <string>
 
 #include "gpu/frame_uniforms.hpp"
+#include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
 #include "render/lights.hpp"
@@ -17,25 +18,6 @@ Buffer upload(GLenum target, const void* data, std::size_t bytes) {
     glBufferData(target, static_cast<GLsizeiptr>(bytes), data, GL_STATIC_DRAW);
     return buffer;
 }
-
-// Restores the framebuffer and viewport a pass found bound, however the pass ends.
-class FramebufferScope {
-  public:
-    FramebufferScope() {
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-        glGetIntegerv(GL_VIEWPORT, viewport_);
-    }
-    ~FramebufferScope() {
-        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
-        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-    }
-    FramebufferScope(const FramebufferScope&) = delete;
-    FramebufferScope& operator=(const FramebufferScope&) = delete;
-
-  private:
-    GLint framebuffer_ = 0;
-    GLint viewport_[4] = {};
-};
 
 }  // namespace
 

@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <numbers>
 
+#include "gpu/framebuffer_scope.hpp"
 #include "gpu/render_target.hpp"
 #include "piece/stone_shape.hpp"
 #include "render/image_error.hpp"
@@ -26,25 +27,6 @@ const char* fire_phrase(TraceDispersion fire) {
     }
     return "?";
 }
-
-// Restores the framebuffer and viewport the caller had bound.
-class FramebufferScope {
-  public:
-    FramebufferScope() {
-        glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer_);
-        glGetIntegerv(GL_VIEWPORT, viewport_);
-    }
-    ~FramebufferScope() {
-        glBindFramebuffer(GL_FRAMEBUFFER, static_cast<GLuint>(framebuffer_));
-        glViewport(viewport_[0], viewport_[1], viewport_[2], viewport_[3]);
-    }
-    FramebufferScope(const FramebufferScope&) = delete;
-    FramebufferScope& operator=(const FramebufferScope&) = delete;
-
-  private:
-    GLint framebuffer_ = 0;
-    GLint viewport_[4] = {};
-};
 
 }  // namespace
 

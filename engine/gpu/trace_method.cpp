@@ -9,6 +9,7 @@
 
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/environment_cube.hpp"
+#include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/stone_method.hpp"
@@ -162,10 +163,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     view.elevation_deg = 40.0;
     auto camera = Camera::make(view, radius, kSide, kSide);
     if (!camera) return Error{"trace: " + camera.error()};
-    GLint framebuffer = 0;
-    GLint viewport[4] = {};
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_VIEWPORT, viewport);
+    const FramebufferScope restore;
     target.value().bind();
     StoneFrame frame{&stone, stone.material, camera.value(), {}, &cube.value(), 0.0, 2.0 * radius};
     TraceMethod m(std::move(geometry).value(), ProgramVariants("trace", {}), true);
@@ -205,8 +203,6 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
             fastest = std::move(m.programs_);
         }
     }
-    glBindFramebuffer(GL_DRAW_FRAMEBUFFER, static_cast<GLuint>(framebuffer));
-    glViewport(viewport[0], viewport[1], viewport[2], viewport[3]);
     if (!measured) return Error{measured.error()};
     m.programs_ = std::move(fastest).value();
     return m;

@@ -33,25 +33,19 @@
 #include "optics/material.hpp"
 #include "render/reference_render.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
 using gem::gpu::TraceDispersion;
 
-[[noreturn]] void fail(const std::string& why) {
-    std::fprintf(stderr, "bench_picture: %s\n", why.c_str());
-    std::exit(1);
-}
-
+constexpr const char* kProgram = "bench_picture";
 template <class T>
 T must(gem::Result<T> r) {
-    if (!r) fail(r.error());
-    return std::move(r).value();
+    return gem::bench::must(kProgram, std::move(r));
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using gem::bench::median;
 
 gem::gpu::PictureOptions options(int samples, double glare, int still_frames) {
     gem::gpu::PictureOptions o;

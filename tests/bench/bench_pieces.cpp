@@ -30,23 +30,20 @@
 #include "scene/scene.hpp"
 #include "trace/intersector.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
+constexpr const char* kProgram = "bench_pieces";
 [[noreturn]] void fail(const std::string& why) {
-    std::fprintf(stderr, "bench_pieces: %s\n", why.c_str());
-    std::exit(1);
+    gem::bench::fail(kProgram, why);
 }
-
 template <class T>
 T must(gem::Result<T> r) {
-    if (!r) fail(r.error());
-    return std::move(r).value();
+    return gem::bench::must(kProgram, std::move(r));
 }
 
-double median(std::vector<double> v) {
-    std::sort(v.begin(), v.end());
-    return v.empty() ? 0.0 : v[v.size() / 2];
-}
+using gem::bench::median;
 
 struct StonePixels {
     long centre = 0;

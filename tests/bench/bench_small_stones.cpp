@@ -21,17 +21,17 @@
 #include "render/image_error.hpp"
 #include "render/reference_render.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
+constexpr const char* kProgram = "bench_small_stones";
 [[noreturn]] void fail(const std::string& why) {
-    std::fprintf(stderr, "bench_small_stones: %s\n", why.c_str());
-    std::exit(1);
+    gem::bench::fail(kProgram, why);
 }
-
 template <class T>
 T must(gem::Result<T> r) {
-    if (!r) fail(r.error());
-    return std::move(r).value();
+    return gem::bench::must(kProgram, std::move(r));
 }
 
 const char* fire_name(gem::gpu::TraceDispersion fire) {

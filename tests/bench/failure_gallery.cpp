@@ -22,21 +22,18 @@
 #include "render/image_error.hpp"
 #include "table_build.hpp"
 
+#include "bench_support.hpp"
+
 namespace {
 
 namespace fs = std::filesystem;
 constexpr int kImage = 128;
 constexpr float kFullScale = 20.0f;
 
-[[noreturn]] void fail(const std::string& what) {
-    std::fprintf(stderr, "failure_gallery: %s\n", what.c_str());
-    std::exit(1);
-}
-
-template <typename T>
+constexpr const char* kProgram = "failure_gallery";
+template <class T>
 T take(gem::Result<T> r) {
-    if (!r) fail(r.error());
-    return std::move(r).value();
+    return gem::bench::must(kProgram, std::move(r));
 }
 
 std::shared_ptr<const gem::Database> build_database() {
