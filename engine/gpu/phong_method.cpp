@@ -77,10 +77,6 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     return gl_check("phong pass");
 }
 
-}  // namespace gem::gpu
-
-namespace gem::gpu {
-
 namespace {
 
 // The phong baseline as a stone method: one PhongMethod per kind of stone, drawn in order (a

@@ -273,10 +273,6 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     return gl_check("table method");
 }
 
-}  // namespace gem::gpu
-
-namespace gem::gpu {
-
 namespace {
 
 // The table method as a stone method: the one loose stone its database holds, its views

@@ -246,10 +246,6 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     return gl_check("trace pass");
 }
 
-}  // namespace gem::gpu
-
-namespace gem::gpu {
-
 namespace {
 
 // The trace as a stone method: one TraceMethod per kind of stone (its block and programs), each

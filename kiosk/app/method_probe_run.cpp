@@ -43,8 +43,9 @@ std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
             i > 0 ? glm::cross(last_forward, forward) / frame_s : glm::dvec3(0.0);
         last_forward = forward;
         const auto begin = std::chrono::steady_clock::now();
-        // The kiosk's own frame (kiosk_frame.hpp), waited for to the end of the GPU's work.
-        auto drawn = draw_kiosk_frame(&scene, &camera.value(), omega, gpu::FrameWait::frame,
+        // The kiosk's own frame (kiosk_frame.hpp), as a screen draws it (no wait inside the
+        // frame), then waited for to the end of the GPU's work.
+        auto drawn = draw_kiosk_frame(&scene, &camera.value(), omega, gpu::FrameWait::none,
                                       scene_picture, target);
         const bool finished = drawn && drawn.value().scene_error.empty();
         glFinish();

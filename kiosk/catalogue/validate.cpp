@@ -45,8 +45,9 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
     for (CatalogueStone& stone : catalogue.stones) {
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
         if (!stone.piece.empty()) {
-            // So does a piece: a missing stone file, stones that intersect, a setting
-            // parameter out of range (piece/piece_file.hpp names the file and key).
+            // A piece that cannot be read (a missing stone file, stones that intersect, a
+            // setting parameter out of range: piece/piece_file.hpp names the file and key)
+            // leaves its entry out, not the catalogue.
             Result<Piece> placed = load_piece(stone.piece);
             if (!placed) {
                 catalogue.left_out.push_back("piece '" + stone.name + "' left out: " +
