@@ -16,16 +16,9 @@ namespace gem::gpu {
 
 namespace {
 
-const char* fire_phrase(TraceDispersion fire) {
-    switch (fire) {
-        case TraceDispersion::none:
-            return "no fire";
-        case TraceDispersion::first_order:
-            return "first-order fire";
-        case TraceDispersion::exact:
-            return "exact fire";
-    }
-    return "?";
+// "no fire", "first-order fire", "exact fire".
+std::string fire_phrase(TraceDispersion fire) {
+    return fire == TraceDispersion::none ? "no fire" : std::string(to_string(fire)) + " fire";
 }
 
 }  // namespace
@@ -129,8 +122,9 @@ std::string describe(const ModelChoice& choice, const FrameRenderer& renderer,
                   "%.1f mm %s (x%zu), %.0f px: depth %d, %s (mean ΔE00 %.2f against depth %d, "
                   "%s; %d models measured)",
                   girdle_width(stone), stone.material.name.c_str(), instances, choice.width_px,
-                  choice.model.depth, fire_phrase(choice.model.fire), choice.delta_e,
-                  choice.configured.depth, fire_phrase(choice.configured.fire), choice.candidates);
+                  choice.model.depth, fire_phrase(choice.model.fire).c_str(), choice.delta_e,
+                  choice.configured.depth, fire_phrase(choice.configured.fire).c_str(),
+                  choice.candidates);
     return line;
 }
 

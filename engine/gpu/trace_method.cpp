@@ -115,6 +115,18 @@ std::uint32_t fire_features(TraceDispersion dispersion) {
 
 }  // namespace
 
+const char* to_string(TraceDispersion fire) {
+    switch (fire) {
+        case TraceDispersion::none:
+            return "none";
+        case TraceDispersion::first_order:
+            return "first-order";
+        case TraceDispersion::exact:
+            return "exact";
+    }
+    return "?";
+}
+
 const char* to_string(ExitSearch search) {
     switch (search) {
         case ExitSearch::walk:

@@ -30,6 +30,8 @@ enum class TraceDispersion {
     first_order,  // exit directions moved by their derivative with respect to n, per channel
     exact,        // each colour channel traced at its own index (three times the work)
 };
+// "none", "first-order", "exact": for logs and benchmark tables.
+const char* to_string(TraceDispersion fire);
 
 // How a convex stone's exits are found.
 enum class ExitSearch { walk, constants, folded, measured };

@@ -34,18 +34,6 @@ T must(gem::Result<T> r) {
     return gem::bench::must(kProgram, std::move(r));
 }
 
-const char* fire_name(gem::gpu::TraceDispersion fire) {
-    switch (fire) {
-        case gem::gpu::TraceDispersion::none:
-            return "none";
-        case gem::gpu::TraceDispersion::first_order:
-            return "first-order";
-        case gem::gpu::TraceDispersion::exact:
-            return "exact";
-    }
-    return "?";
-}
-
 }  // namespace
 
 int main(int argc, char** argv) {
@@ -123,7 +111,7 @@ int main(int argc, char** argv) {
             }
         }
         for (std::size_t f = 0; f < fires.size(); ++f) {
-            std::printf("%6d %12s", size, fire_name(fires[f]));
+            std::printf("%6d %12s", size, gem::gpu::to_string(fires[f]));
             for (double e : error[f]) std::printf("  %8.2f", e);
             std::printf("\n");
         }
