@@ -11,13 +11,13 @@ Result<const SceneReferences::Entry*> SceneReferences::get(const glm::dvec3& vie
                                      std::lround(view.z * 1e9));
     auto found = entries_.find(key);
     if (found != entries_.end()) return &found->second;
-    auto ref = render_cpu(scene_, cpu_env_, view, image_, full_reference());
+    auto ref = render_cpu(scene_, environment_, view, image_, full_reference());
     if (!ref) return Error{ref.error()};
     ReferenceSettings nd = full_reference();
     nd.spectral = false;
-    auto ref_nd = render_cpu(scene_, cpu_env_, view, image_, nd);
+    auto ref_nd = render_cpu(scene_, environment_, view, image_, nd);
     if (!ref_nd) return Error{ref_nd.error()};
-    auto ring = ring_coverage(scene_, gpu_env_, view, image_);
+    auto ring = ring_coverage(scene_, environment_, view, image_);
     if (!ring) return Error{ring.error()};
     auto stone_mask = stone_coverage(scene_, view, image_);
     if (!stone_mask) return Error{stone_mask.error()};

@@ -16,11 +16,10 @@ namespace gem::accuracy {
 
 class SceneReferences {
   public:
-    // Keeps references: scene and environments must outlive it. `gpu_env` is what the GPU
-    // frames surround the stone with, `cpu_env` what the reference does (scene_environment).
-    SceneReferences(const Scene& scene, const Environment& gpu_env, const Environment& cpu_env,
-                    int image)
-        : scene_(scene), gpu_env_(gpu_env), cpu_env_(cpu_env), image_(image) {}
+    // Keeps references: scene and environment (what surrounds the stone, for the GPU frames
+    // and the reference alike) must outlive it.
+    SceneReferences(const Scene& scene, const Environment& environment, int image)
+        : scene_(scene), environment_(environment), image_(image) {}
 
     struct Entry {
         CpuFrame reference;
@@ -29,12 +28,11 @@ class SceneReferences {
     };
     // Needs a current GL context (the ring's coverage is drawn on the GPU).
     Result<const Entry*> get(const glm::dvec3& view);
-    const Environment& cpu_environment() const { return cpu_env_; }
+    const Environment& cpu_environment() const { return environment_; }
 
   private:
     const Scene& scene_;
-    const Environment& gpu_env_;
-    const Environment& cpu_env_;
+    const Environment& environment_;
     int image_;
     std::map<std::tuple<long, long, long>, Entry> entries_;
 };

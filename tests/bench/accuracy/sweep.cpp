@@ -242,7 +242,7 @@ Result<std::vector<Row>> run_sweep(const SweepOptions& options) {
     base.level = static_cast<std::uint32_t>(options.image);
     print_header();
     for (const Scene& scene : scenes.value()) {
-        SceneReferences refs(scene, studio, studio, options.image);
+        SceneReferences refs(scene, studio, options.image);
         auto base_db = cache.get(scene.stone_name, scene.stone, base, scene.min_elevation_deg);
         if (!base_db) return Error{base_db.error()};
         const ViewGrid& grid = base_db.value().database->grid();
