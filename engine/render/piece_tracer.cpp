@@ -63,8 +63,9 @@ struct PieceTracer::Nearest {
 };
 
 PieceTracer::PieceTracer(const Piece& piece, const Environment& environment,
-                         const ShadingSettings& shading, const TraceSettings& trace)
-    : piece_(piece), environment_(environment), shading_(shading), trace_(trace) {
+                         const ShadingSettings& shading, const TraceSettings& trace,
+                         PieceSight sight)
+    : piece_(piece), environment_(environment), shading_(shading), trace_(trace), sight_(sight) {
     for (const Stone& kind : piece.kinds) {
         tracers_.emplace_back(kind);
         entries_.push_back(make_intersector(kind));
@@ -76,9 +77,9 @@ PieceTracer::PieceTracer(const Piece& piece, const Environment& environment,
 
 PieceTracer::~PieceTracer() = default;
 
-PieceTracer::Nearest PieceTracer::nearest(const Ray& ray, int skip_stone) const {
+PieceTracer::Nearest PieceTracer::nearest(const Ray& ray, int skip_stone, bool stones) const {
     Nearest n;
-    for (std::size_t i = 0; i < piece_.stones.size(); ++i) {
+    for (std::size_t i = 0; stones && i < piece_.stones.size(); ++i) {
         if (static_cast<int>(i) == skip_stone) continue;
         const PieceStone& s = piece_.stones[i];
         // The bounding sphere first: most rays pass most stones by.
@@ -121,7 +122,7 @@ glm::dvec3 PieceTracer::onward(const Ray& ray, int from_stone, const glm::dvec3&
                                int pass, double share, Scratch& scratch) const {
     const double w = std::max({weight.x, weight.y, weight.z}) * share;
     if (w < kMinShare) return weight * escaped(ray, from_stone, from_normal, k);
-    const Nearest next = nearest(ray, from_stone);
+    const Nearest next = nearest(ray, from_stone, sight_ == PieceSight::everything);
     if (next.stone < 0 && !next.metal_hit) {
         return weight * escaped(ray, from_stone, from_normal, k);
     }
@@ -142,7 +143,8 @@ glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3
         const double lobe = specular_lobe(ray.direction, to_light, shading_.h);
         if (lobe == 0.0) continue;
         if (from_stone >= 0 && glm::dot(from_normal, to_light) < 0.0) continue;
-        const Nearest block = nearest({ray.origin, to_light}, from_stone);
+        const Nearest block =
+            nearest({ray.origin, to_light}, from_stone, sight_ == PieceSight::everything);
         const double reach = light.directional ? std::numeric_limits<double>::infinity()
                                                : glm::length(light.position - ray.origin);
         if ((block.stone >= 0 || block.metal_hit) && block.t < reach) continue;

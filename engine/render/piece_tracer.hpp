@@ -21,6 +21,11 @@
 
 namespace gem {
 
+// What a ray leaving one part of a piece may meet: every other part (the truth), or the metal
+// alone, as a virtual cube holding only the metal gives the GPU's stones. The second measures
+// what stones in the GPU's cube could gain at most (gpu_piece_test.cpp).
+enum class PieceSight { everything, metal_only };
+
 class PieceTracer {
   public:
     // Passes between parts: a ray out of one stone may reach the metal, another stone, and so
@@ -31,7 +36,7 @@ class PieceTracer {
 
     // Keeps references: the piece, environment and settings must outlive the tracer.
     PieceTracer(const Piece& piece, const Environment& environment, const ShadingSettings& shading,
-                const TraceSettings& trace);
+                const TraceSettings& trace, PieceSight sight = PieceSight::everything);
     ~PieceTracer();
 
     // One state per thread and sample: the ray-lists of every pass and the random stream that
@@ -48,7 +53,8 @@ class PieceTracer {
 
   private:
     struct Nearest;
-    Nearest nearest(const Ray& ray, int skip_stone) const;
+    // The part `ray` meets first; no stone at all when `stones` is false.
+    Nearest nearest(const Ray& ray, int skip_stone, bool stones = true) const;
     // What `ray` brings back from the part it meets first (`n`), and from a ray leaving a part
     // with `weight` of the pixel's share (escaping, or on to the next part).
     glm::dvec3 follow(const Ray& ray, const Nearest& n, const std::vector<double>& iors, int pass,
@@ -65,6 +71,7 @@ class PieceTracer {
     const Environment& environment_;
     const ShadingSettings& shading_;
     const TraceSettings& trace_;
+    PieceSight sight_;
     std::vector<Tracer> tracers_;                        // one per kind
     std::vector<std::unique_ptr<Intersector>> entries_;  // one per kind
     std::vector<double> radii_;                          // one per kind

@@ -152,7 +152,8 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
 }
 
 Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
-                                     const RenderSettings& settings, RenderStats* stats) {
+                                     const RenderSettings& settings, RenderStats* stats,
+                                     PieceSight sight) {
     const auto start = std::chrono::steady_clock::now();
     if (settings.shading.model != ShadingModel::physical) {
         return Error{"a piece is shaded physically (the thesis' model is for one stone)"};
@@ -164,7 +165,7 @@ Result<Image> render_piece_reference(const Piece& piece, const Environment& envi
     Result<Camera> camera =
         Camera::make(settings.camera, piece.radius_mm(), settings.width, settings.height);
     if (!camera) return Error{camera.error()};
-    const PieceTracer tracer(piece, environment, settings.shading, settings.trace);
+    const PieceTracer tracer(piece, environment, settings.shading, settings.trace, sight);
     std::atomic<std::uint64_t> rays{0};
     const auto& ws = wavelengths.value();
     Image image = render_pixels<PieceTracer::Scratch>(

@@ -10,6 +10,7 @@
 #include "render/camera.hpp"
 #include "render/environment.hpp"
 #include "render/image.hpp"
+#include "render/piece_tracer.hpp"
 #include "render/shading.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
@@ -43,8 +44,10 @@ Result<Image> render_reference(const Stone& stone, const Environment& environmen
                                const RenderSettings& settings, RenderStats* stats = nullptr);
 
 // The same for a whole piece (render/piece_tracer.hpp): every stone, the metal and what passes
-// between them; the camera orbits the piece's origin and frames its bounding sphere.
+// between them; the camera orbits the piece's origin and frames its bounding sphere. `sight`:
+// what a ray leaving a part may meet (render/piece_tracer.hpp).
 Result<Image> render_piece_reference(const Piece& piece, const Environment& environment,
-                                     const RenderSettings& settings, RenderStats* stats = nullptr);
+                                     const RenderSettings& settings, RenderStats* stats = nullptr,
+                                     PieceSight sight = PieceSight::everything);
 
 }  // namespace gem

@@ -1,7 +1,9 @@
 // The exact reference of a whole piece against what can be known without it: a piece of one
 // stone and no metal must draw exactly what the loose stone's reference draws (a second,
 // independent renderer of the same rays), and a mirror of metal under a uniform sky must show
-// the metal's F0, the Fresnel reflectance at normal incidence.
+// the metal's F0, the Fresnel reflectance at normal incidence. Two stones that see only the
+// metal (PieceSight::metal_only) each draw what they draw alone, and differ where they see each
+// other (PieceSight::everything).
 
 #include <gtest/gtest.h>
 
@@ -72,6 +74,51 @@ TEST(PieceReference, AMirrorOfMetalUnderAUniformSkyShowsItsF0) {
     const glm::vec3 f0 = metal_f0(Metal::platinum);
     EXPECT_FLOAT_EQ(centre.w, 1.0f);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], f0[c], 1e-3) << c;
+}
+
+// Two diamonds side by side, 0.6 mm apart, each drawn in a piece of its own and both in one.
+// Every piece holds one metal vertex and no triangles, so the camera frames the same sphere.
+TEST(PieceReference, StonesThatSeeOnlyTheMetalDrawWhatEachDrawsAlone) {
+    const Stone stone = test::round_diamond(3.0);
+    auto piece_of = [&](std::vector<glm::dvec3> at) {
+        Piece piece;
+        piece.name = "pair";
+        piece.kinds.push_back(stone);
+        for (const glm::dvec3& p : at) piece.stones.push_back({0, {glm::dmat3(1.0), p}, "stone"});
+        piece.metal.positions = {glm::vec3(0.0f, 0.0f, 4.0f)};
+        return piece;
+    };
+    const glm::dvec3 left(-1.8, 0.0, 0.0), right(1.8, 0.0, 0.0);
+    const Environment studio = Environment::studio();
+    RenderSettings s = small_picture();
+    s.camera.azimuth_deg = 0.0;  // the pair across the picture, neither hiding the other
+    auto render = [&](const Piece& piece, PieceSight sight) {
+        auto image = render_piece_reference(piece, studio, s, nullptr, sight);
+        EXPECT_TRUE(image) << image.error();
+        return image ? image.value() : Image{};
+    };
+    const Image pair_blind = render(piece_of({left, right}), PieceSight::metal_only);
+    const Image pair = render(piece_of({left, right}), PieceSight::everything);
+    const Image alone_left = render(piece_of({left}), PieceSight::everything);
+    const Image alone_right = render(piece_of({right}), PieceSight::everything);
+    double blind_worst = 0.0, seeing_mean = 0.0;
+    int covered = 0;
+    for (int y = 0; y < s.height; ++y) {
+        for (int x = 0; x < s.width; ++x) {
+            const glm::vec4 l = alone_left.at(x, y), r = alone_right.at(x, y);
+            if (l.w < 1.0f && r.w < 1.0f) continue;
+            const glm::vec4 alone = l.w >= 1.0f ? l : r;
+            const glm::vec4 blind = pair_blind.at(x, y), seeing = pair.at(x, y);
+            for (int c = 0; c < 3; ++c) {
+                blind_worst = std::max(blind_worst, double(std::abs(blind[c] - alone[c])));
+                seeing_mean += std::abs(seeing[c] - alone[c]) / 3.0;
+            }
+            ++covered;
+        }
+    }
+    ASSERT_GT(covered, 200);
+    EXPECT_LT(blind_worst, 1e-5);
+    EXPECT_GT(seeing_mean / covered, 1e-3);  // each stone's exits meet the other
 }
 
 }  // namespace
