@@ -166,8 +166,10 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         frame.cube_half_mm = cube_half_mm_;
         frame.scene_radius_mm = scene_radius_mm_;
     }
+    const auto submit_start = Clock::now();
     ok = method_->draw(frames_, kinds_, stats);
     if (!ok) return Error{ok.error()};
+    stats.stone_submit_ms = ms_since(submit_start);
     if (wait == FrameWait::passes) {
         glFinish();
         stats.stone_ms = ms_since(stone_start);

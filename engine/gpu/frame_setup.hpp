@@ -60,6 +60,9 @@ struct FrameStats {
     // other passes.
     double stone_ms = 0.0;
     double metal_ms = 0.0;  // the ring's or piece's metal pass alone, as stone_ms
+    // The CPU's time issuing the stone pass's draws (any FrameWait): what drawing a piece's
+    // stones one call each costs beyond their pixels.
+    double stone_submit_ms = 0.0;
     TableFrameStats table;
 };
 

@@ -31,6 +31,8 @@ double smith_g1(double n_dot_x, double alpha) {
     return 2.0 * n_dot_x / (n_dot_x + std::sqrt(a2 + (1.0 - a2) * n_dot_x * n_dot_x));
 }
 
+}  // namespace
+
 Stone metal_as_solid(const MetalMesh& metal) {
     Stone s;
     s.name = "metal";
@@ -52,8 +54,6 @@ Stone metal_as_solid(const MetalMesh& metal) {
     }
     return s;
 }
-
-}  // namespace
 
 struct PieceTracer::Nearest {
     double t = std::numeric_limits<double>::infinity();

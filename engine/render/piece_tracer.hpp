@@ -26,6 +26,10 @@ namespace gem {
 // what stones in the GPU's cube could gain at most (gpu_piece_test.cpp).
 enum class PieceSight { everything, metal_only };
 
+// The metal's triangles as a solid for the intersectors (trace/intersector.hpp), each facing
+// where its vertex normals do; triangles without area are left out.
+Stone metal_as_solid(const MetalMesh& metal);
+
 class PieceTracer {
   public:
     // Passes between parts: a ray out of one stone may reach the metal, another stone, and so
