@@ -148,8 +148,16 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
     const auto ms_since = [](Clock::time_point t) {
         return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
     };
+    // One pass timed alone (FrameWait::passes): from the glFinish before it to one after it.
+    auto pass_start = Clock::now();
+    const auto passed = [&](double& ms) {
+        if (wait != FrameWait::passes) return;
+        glFinish();
+        ms += ms_since(pass_start);
+        pass_start = Clock::now();
+    };
     if (wait == FrameWait::passes) glFinish();
-    const auto stone_start = Clock::now();
+    pass_start = Clock::now();
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
     if (setup_.piece != nullptr && !camera.orthographic()) {
@@ -166,23 +174,24 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         frame.cube_half_mm = cube_half_mm_;
         frame.scene_radius_mm = scene_radius_mm_;
     }
+    // The stones' depth first (where the method has that pass), then the metal, then the
+    // stones: each is shaded only where it is seen. Stones shaded before the metal cost every
+    // pixel the metal then covers: a band's far side, the halo's stones under their beads
+    // (bench_pieces: the band's stone pass shaded 130k pixels to keep 46k).
+    auto depth = method_->draw_depth(frames_, kinds_);
+    if (!depth) return Error{depth.error()};
+    passed(stats.stone_depth_ms);
+    if (ring_) {
+        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
+        if (!ok) return Error{ok.error()};
+        passed(stats.metal_ms);
+    }
     const auto submit_start = Clock::now();
     ok = method_->draw(frames_, kinds_, stats);
     if (!ok) return Error{ok.error()};
     stats.stone_submit_ms = ms_since(submit_start);
-    if (wait == FrameWait::passes) {
-        glFinish();
-        stats.stone_ms = ms_since(stone_start);
-    }
-    const auto metal_start = Clock::now();
-    if (ring_) {
-        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
-        if (!ok) return Error{ok.error()};
-        if (wait == FrameWait::passes) {
-            glFinish();
-            stats.metal_ms = ms_since(metal_start);
-        }
-    }
+    passed(stats.stone_ms);
+    stats.stone_ms += stats.stone_depth_ms;
     if (wait != FrameWait::none) glFinish();
     stats.cpu_ms = ms_since(start);
     auto clean = gl_check(check_label_);

@@ -55,11 +55,12 @@ enum class FrameWait { none, frame, passes };
 
 struct FrameStats {
     double cpu_ms = 0.0;  // from the start of the frame to glFinish returning
-    // The stone pass alone, between a glFinish after the background and one after the stone
-    // (FrameWait::passes only; 0 otherwise): what the method costs, without the picture's
+    // The stone passes alone (the depth pass and the shading, each between two glFinish calls;
+    // FrameWait::passes only, 0 otherwise): what the method costs, without the picture's
     // other passes.
     double stone_ms = 0.0;
-    double metal_ms = 0.0;  // the ring's or piece's metal pass alone, as stone_ms
+    double stone_depth_ms = 0.0;  // the stones' depth pass (StoneMethod::draw_depth), in stone_ms
+    double metal_ms = 0.0;        // the ring's or piece's metal pass alone, as stone_ms
     // The CPU's time issuing the stone pass's draws (any FrameWait): what drawing a piece's
     // stones one call each costs beyond their pixels.
     double stone_submit_ms = 0.0;

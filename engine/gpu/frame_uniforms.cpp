@@ -69,13 +69,15 @@ Camera stone_camera(const StoneFrame& frame) {
     return frame.camera.in_frame(frame.placement.rotation, frame.placement.position);
 }
 
-void set_camera_uniforms(const Program& program, const StoneFrame& frame) {
-    set_ray_uniforms(program, stone_camera(frame));
+glm::mat4 stone_view_projection(const StoneFrame& frame) {
     glm::dmat4 model(frame.placement.rotation);
     model[3] = glm::dvec4(frame.placement.position, 1.0);
-    program.set(
-        "u_view_projection",
-        glm::mat4(glm::dmat4(view_projection(frame.camera, frame.scene_radius_mm)) * model));
+    return glm::mat4(glm::dmat4(view_projection(frame.camera, frame.scene_radius_mm)) * model);
+}
+
+void set_camera_uniforms(const Program& program, const StoneFrame& frame) {
+    set_ray_uniforms(program, stone_camera(frame));
+    program.set("u_view_projection", stone_view_projection(frame));
 }
 
 std::uint32_t shading_features(const StoneFrame& frame) {

@@ -34,6 +34,8 @@ Camera stone_camera(const StoneFrame& frame);
 // camera, and a u_view_projection that places the stone's vertices in the piece, so the depth
 // of every stone and of the metal is measured alike.
 void set_camera_uniforms(const Program& program, const StoneFrame& frame);
+// That u_view_projection alone: the frame's view_projection() times the stone's placement.
+glm::mat4 stone_view_projection(const StoneFrame& frame);
 
 // Sets camera.glsl's uniforms, u_view_projection among them.
 void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm);

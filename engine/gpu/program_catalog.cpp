@@ -34,6 +34,8 @@ std::vector<ProgramSpec> all_program_specs() {
          {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"},
          kShadingFeatures},
+        // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
+        {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
         {"phong",
          {"stone.vert"},

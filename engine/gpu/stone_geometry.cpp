@@ -158,7 +158,7 @@ void StoneGeometry::draw_front_faces() const {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(GL_LEQUAL);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
@@ -166,6 +166,21 @@ void StoneGeometry::draw_front_faces() const {
     draw_triangles();
     glDisable(GL_CULL_FACE);
     glDisable(GL_BLEND);
+    glDepthFunc(GL_LESS);
+}
+
+void StoneGeometry::draw_depth() const {
+    glDisable(GL_BLEND);
+    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    glEnable(GL_DEPTH_TEST);
+    glDepthFunc(GL_LESS);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_CULL_FACE);
+    glFrontFace(GL_CCW);
+    glCullFace(GL_BACK);
+    draw_triangles();
+    glDisable(GL_CULL_FACE);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
 void StoneGeometry::draw_triangles() const {

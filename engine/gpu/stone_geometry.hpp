@@ -35,9 +35,13 @@ class StoneGeometry {
     // Before a draw with `program` in use: the block, and the map or the triangles on
     // texture unit `unit` (u_exit_guess, u_triangles; u_triangle_count).
     void bind(const Program& program, int unit) const;
-    // The stone pass: front faces only, depth-tested (GL_LESS) and written, blended over what
-    // is drawn (GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA); restores blending and culling off.
+    // The stone pass: front faces only, depth-tested (GL_LEQUAL, so that a depth pass of the
+    // same faces leaves them in) and written, blended over what is drawn (GL_SRC_ALPHA,
+    // GL_ONE_MINUS_SRC_ALPHA); restores blending and culling off.
     void draw_front_faces() const;
+    // The same faces' depth alone (GL_LESS), colour writes masked off and restored, with the
+    // caller's program (stone_depth) in use.
+    void draw_depth() const;
     // Every triangle with the caller's state (phong's passes).
     void draw_triangles() const;
 

@@ -40,6 +40,16 @@ class StoneMethod {
     // method was made with), its camera and cube filled in, into the bound framebuffer.
     virtual Result<bool> draw(const std::vector<StoneFrame>& frames,
                               const std::vector<std::size_t>& kinds, FrameStats& stats) = 0;
+    // Before the metal and draw(): every stone's depth alone, so that the metal is shaded only
+    // where no stone is in front of it and each stone only where nothing is (a piece's stones
+    // behind its metal, a band's far side, cost their pixels otherwise; bench_pieces). False:
+    // the method has no such pass (phong blends back faces that a depth pass would hide).
+    virtual Result<bool> draw_depth(const std::vector<StoneFrame>& frames,
+                                    const std::vector<std::size_t>& kinds) {
+        (void)frames;
+        (void)kinds;
+        return false;
+    }
 
     // A method with models per kind of stone (the trace: depth and fire, stone_models.hpp);
     // the others have none: model() is empty and draw_alone() refuses.

@@ -11,6 +11,7 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/stone_method.hpp"
 #include "render/camera.hpp"
@@ -258,13 +259,19 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     return gl_check("trace pass");
 }
 
+void TraceMethod::draw_depth(const StoneFrame& frame, const Program& depth) const {
+    depth.set("u_view_projection", stone_view_projection(frame));
+    geometry_.draw_depth();
+}
+
 namespace {
 
 // The trace as a stone method: one TraceMethod per kind of stone (its block and programs), each
 // kind traced with its own model (depth, fire), the setup's to begin with.
 class TraceStones final : public StoneMethod {
   public:
-    explicit TraceStones(const FrameSetup& setup) : trace_(setup.trace) {}
+    TraceStones(const FrameSetup& setup, Program depth)
+        : trace_(setup.trace), depth_(std::move(depth)) {}
 
     Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
         auto made = TraceMethod::make(stone);
@@ -285,6 +292,17 @@ class TraceStones final : public StoneMethod {
             auto ok = methods_[k]->draw(frames[i], settings_[k], models_[k].fire);
             if (!ok) return ok;
         }
+        return true;
+    }
+
+    Result<bool> draw_depth(const std::vector<StoneFrame>& frames,
+                            const std::vector<std::size_t>& kinds) override {
+        depth_.use();
+        for (std::size_t i = 0; i < frames.size(); ++i) {
+            methods_[kinds[i]]->draw_depth(frames[i], depth_);
+        }
+        auto clean = gl_check("trace depth pass");
+        if (!clean) return Error{clean.error()};
         return true;
     }
 
@@ -309,6 +327,7 @@ class TraceStones final : public StoneMethod {
 
   private:
     TraceSettings trace_;
+    Program depth_;  // stone_depth
     std::vector<std::unique_ptr<TraceMethod>> methods_;
     std::vector<bool> convex_;
     std::vector<StoneModel> models_;
@@ -319,7 +338,9 @@ class TraceStones final : public StoneMethod {
 
 Result<std::unique_ptr<StoneMethod>> make_trace_stones(const FrameSetup& setup,
                                                        const std::vector<const Stone*>& kinds) {
-    auto method = std::make_unique<TraceStones>(setup);
+    auto depth = build_program("stone_depth");
+    if (!depth) return Error{depth.error()};
+    auto method = std::make_unique<TraceStones>(setup, std::move(depth).value());
     for (const Stone* kind : kinds) {
         auto added = method->add_kind(*kind, {setup.trace.max_depth, setup.trace_dispersion});
         if (!added) return Error{added.error()};

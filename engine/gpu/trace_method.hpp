@@ -49,6 +49,9 @@ class TraceMethod {
     // r/t factors; the refractive index traced with is frame.material.index().
     Result<bool> draw(const StoneFrame& frame, const TraceSettings& trace,
                       TraceDispersion dispersion = TraceDispersion::none);
+    // The stone's depth alone for `frame` (StoneMethod::draw_depth), with `depth` (the
+    // stone_depth program) in use.
+    void draw_depth(const StoneFrame& frame, const Program& depth) const;
 
     // The convex search in use (walk for a non-convex stone, which uses none), and what the
     // measurement gave (ms for the test picture; 0 when not measured), also as a log phrase.

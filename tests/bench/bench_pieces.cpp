@@ -2,10 +2,10 @@
 // kiosk draws it (kiosk/app/stone_scene.hpp: the shipped config's first look, the trace, the
 // start view framed as the kiosk frames it), the pieces drawn in turn frame by frame so that
 // the machine's load falls on all of them alike. Per piece: the median whole frame, its stone
-// pass alone (FrameWait::passes) and the CPU's time issuing that pass's draws (a call per
-// stone), the metal pass, and its stone pixels (centre and others: pixels whose
-// orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal in
-// front of a stone is not subtracted). A piece of several stones is drawn twice: with every
+// passes alone (FrameWait::passes: its depth pass and its shading) and the CPU's time issuing that
+// pass's draws (a call per stone), the metal pass, and its stone pixels (centre and others: pixels
+// whose orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal
+// in front of a stone is not subtracted). A piece of several stones is drawn twice: with every
 // stone traced as configured, and with its small stones' models chosen as the kiosk chooses
 // them (gpu/stone_models.hpp), the choice printed.
 //
@@ -131,6 +131,7 @@ struct Subject {
     std::vector<double> stone_ms;
     std::vector<double> metal_ms;
     std::vector<double> submit_ms;
+    std::vector<double> depth_ms;
 };
 
 }  // namespace
@@ -210,21 +211,23 @@ int main(int argc, char** argv) {
             s.stone_ms.push_back(stats.stone_ms);
             s.metal_ms.push_back(stats.metal_ms);
             s.submit_ms.push_back(stats.stone_submit_ms);
+            s.depth_ms.push_back(stats.stone_depth_ms);
         }
     }
     std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
                 width, height, exact_fire ? "exact" : "first-order", frames);
-    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s\n", "piece", "models",
-                "stones", "frame ms", "stone ms", "submit ms", "metal ms", "x first", "centre px",
-                "others px", "shaded px", "kept px", "metal tri");
+    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s\n", "piece",
+                "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms", "metal ms",
+                "x first", "centre px", "others px", "shaded px", "kept px", "metal tri");
     const double first = median(subjects.front().frame_ms);
     for (const Subject& s : subjects) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
-        std::printf("%-20s %8s %7zu %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu\n",
-                    s.file.c_str(), s.chosen ? "chosen" : "config", s.piece->stones.size(),
-                    median(s.frame_ms), median(s.stone_ms), median(s.submit_ms), median(s.metal_ms),
-                    median(s.frame_ms) / first, px.centre, px.others, px.shaded, px.kept,
-                    s.piece->metal.indices.size() / 3);
+        std::printf(
+            "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu\n",
+            s.file.c_str(), s.chosen ? "chosen" : "config", s.piece->stones.size(),
+            median(s.frame_ms), median(s.stone_ms), median(s.depth_ms), median(s.submit_ms),
+            median(s.metal_ms), median(s.frame_ms) / first, px.centre, px.others, px.shaded,
+            px.kept, s.piece->metal.indices.size() / 3);
     }
     return 0;
 }

@@ -6,6 +6,10 @@ layout(location = 1) in uint a_facet;
 
 uniform mat4 u_view_projection;  // frame_uniforms.hpp: view_projection()
 
+// The depth pass (stone_depth.frag) and the shading pass must place every corner alike, so the
+// shading pass's GL_LEQUAL keeps exactly the fragments the depth pass wrote.
+invariant gl_Position;
+
 out vec3 v_position;
 flat out uint v_facet;
 
