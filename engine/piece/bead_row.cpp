@@ -83,8 +83,10 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
     // Walls beside the stones from the floor to the top of the girdle, and the floor under
     // the culets, each clear of the stones.
     MeshBuilder b(piece.metal);
-    const int segments = std::max(96, 8 * n);
     const double wall = params.wall_mm;
+    // As many segments as stones times a whole number, so every stone has the same walls
+    // beside it; the walls lie within the girdle's radius and a wall of the row's circle.
+    const int segments = circle_segments(circle.radius + rg + 2.0 * wall, n);
     const double floor_top = e.culet_y - kClearanceMm;
     const double wall_bottom = floor_top - wall;
     const double wall_z = rg + kClearanceMm + 0.5 * wall;

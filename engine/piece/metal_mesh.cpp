@@ -23,6 +23,13 @@ double MetalMesh::radius_mm() const {
     return std::sqrt(r2);
 }
 
+int circle_segments(double radius_mm, int multiple_of) {
+    const int m = std::max(multiple_of, 1);
+    const double cosine = 1.0 - kChordToleranceMm / std::max(radius_mm, kChordToleranceMm);
+    const int fewest = static_cast<int>(std::ceil(kPi / std::acos(cosine)));
+    return std::max(m * ((fewest + m - 1) / m), 3);
+}
+
 std::uint32_t MeshBuilder::vertex(const glm::dvec3& p, const glm::dvec3& n) {
     mesh_.positions.emplace_back(frame_.to_piece(p));
     mesh_.normals.emplace_back(glm::normalize(frame_.direction_to_piece(n)));
