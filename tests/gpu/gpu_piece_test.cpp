@@ -103,7 +103,7 @@ TEST(GpuPiece, AStoneTurnedAndMovedInAPieceIsTracedInItsOwnFrame) {
 // sees the halo's metal from its centre: the figures printed are what that costs (measured: the
 // centre 11.7 dB, the small stones 9.6 dB, 7.4 dB without them; docs/pieces.md). The same GPU
 // picture against a reference whose stones see only the metal (PieceSight::metal_only) says
-// what stones in the cube could gain at most (12.1 and 9.0 dB: none worth a cube's stones).
+// what stones in the cube could gain at most (12.0 and 9.0 dB: none worth a cube's stones).
 // The small stones drawn must score above a GPU picture without them by a clear margin (1 dB).
 TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     ASSERT_TRUE(gpu_test::context().ok());
