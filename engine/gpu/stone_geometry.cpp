@@ -157,30 +157,27 @@ void StoneGeometry::bind(const Program& program, int unit) const {
 void StoneGeometry::draw_front_faces() const {
     glEnable(GL_BLEND);
     glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LEQUAL);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);
-    glCullFace(GL_BACK);
-    draw_triangles();
-    glDisable(GL_CULL_FACE);
+    draw_front_triangles(GL_LEQUAL);
     glDisable(GL_BLEND);
-    glDepthFunc(GL_LESS);
 }
 
 void StoneGeometry::draw_depth() const {
     glDisable(GL_BLEND);
     glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
+    draw_front_triangles(GL_LESS);
+    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+}
+
+void StoneGeometry::draw_front_triangles(GLenum depth_test) const {
     glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
+    glDepthFunc(depth_test);
     glDepthMask(GL_TRUE);
     glEnable(GL_CULL_FACE);
     glFrontFace(GL_CCW);
     glCullFace(GL_BACK);
     draw_triangles();
     glDisable(GL_CULL_FACE);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+    glDepthFunc(GL_LESS);
 }
 
 void StoneGeometry::draw_triangles() const {

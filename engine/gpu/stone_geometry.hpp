@@ -50,6 +50,8 @@ class StoneGeometry {
 
   private:
     StoneGeometry() = default;
+    // Front faces, depth-tested with `depth_test` and written; restores culling off, GL_LESS.
+    void draw_front_triangles(GLenum depth_test) const;
     VertexArray vertex_array_;
     Buffer vertices_;
     Buffer block_;
