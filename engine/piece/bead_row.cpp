@@ -85,7 +85,7 @@ Result<int> add_bead_row(const BeadRowParams& params, const RowCircle& circle, s
     MeshBuilder b(piece.metal);
     const double wall = params.wall_mm;
     // As many segments as stones times a whole number, so every stone has the same walls
-    // beside it; the walls lie within the girdle's radius and a wall of the row's circle.
+    // beside it; every wall lies within a girdle's radius and two walls of the row's circle.
     const int segments = circle_segments(circle.radius + rg + 2.0 * wall, n);
     const double floor_top = e.culet_y - kClearanceMm;
     const double wall_bottom = floor_top - wall;

@@ -29,7 +29,6 @@ struct MetalMesh {
     double radius_mm() const;
 };
 
-// Adds solids to a mesh, each made in a local frame that `frame` takes into the mesh's.
 // How far the chords of the metal's long circles (a halo's or a band's walls) may fall inside
 // them: a third of a pixel at the kiosk's closest view. The start view shows a halo's 1.3 mm
 // stones 57 px across (44 px/mm) and config/gemkiosk.toml's max_zoom is 3, so 130 px/mm, about
@@ -40,6 +39,7 @@ inline constexpr double kChordToleranceMm = 0.0025;
 // stay within kChordToleranceMm of it (the sagitta r (1 - cos(pi / n))).
 int circle_segments(double radius_mm, int multiple_of = 1);
 
+// Adds solids to a mesh, each made in a local frame that `frame` takes into the mesh's.
 class MeshBuilder {
   public:
     // Building on an empty mesh makes it closed (MetalMesh::closed); on one that is not, it

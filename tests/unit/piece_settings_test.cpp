@@ -14,6 +14,7 @@
 #include <string>
 
 #include "optics/material.hpp"
+#include "piece/metal_mesh.hpp"
 #include "piece/piece_check.hpp"
 #include "piece/seat.hpp"
 #include "piece/settings.hpp"
@@ -231,6 +232,26 @@ INSTANTIATE_TEST_SUITE_P(Settings, EverySetting,
                              std::replace(s.begin(), s.end(), '-', '_');
                              return s;
                          });
+
+// A circle's chords, measured as points: the middle of the chord between two neighbouring
+// vertices lies within the tolerance of the circle, and with one multiple fewer it would not.
+TEST(Settings, WallsAreCutIntoTheFewestSegmentsWithinTheChordTolerance) {
+    auto chord_gap = [](double r, int n) {
+        const double step = 2.0 * 3.14159265358979323846 / n;
+        const glm::dvec2 a(r, 0.0), b(r * std::cos(step), r * std::sin(step));
+        return r - glm::length(0.5 * (a + b));
+    };
+    for (const double r : {1.0, 4.8, 11.5, 30.0}) {
+        for (const int multiple : {1, 22, 36}) {
+            const int n = circle_segments(r, multiple);
+            EXPECT_EQ(n % multiple, 0) << r << " " << multiple;
+            EXPECT_LE(chord_gap(r, n), kChordToleranceMm) << r << " " << multiple;
+            if (n > multiple) {
+                EXPECT_GT(chord_gap(r, n - multiple), kChordToleranceMm) << r << " " << multiple;
+            }
+        }
+    }
+}
 
 TEST(Settings, ClawTipsStandAtGiasNinetyToHundredPercentOfTheCrownHeight) {
     for (const SettingKind kind :
