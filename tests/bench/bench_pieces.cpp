@@ -5,9 +5,9 @@
 // passes alone (FrameWait::passes: its depth pass and its shading) and the CPU's time issuing that
 // pass's draws (a call per stone), the metal pass, and its stone pixels (centre and others: pixels
 // whose orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal
-// in front of a stone is not subtracted). A piece of several stones is drawn twice: with every
-// stone traced as configured, and with its small stones' models chosen as the kiosk chooses
-// them (gpu/stone_models.hpp), the choice printed.
+// in front of a stone is not subtracted; and the stone pixels shaded and kept, StonePixels). A
+// piece of several stones is drawn twice: with every stone traced as configured, and with its small
+// stones' models chosen as the kiosk chooses them (gpu/stone_models.hpp), the choice printed.
 //
 //   bench_pieces [--size WxH] [--frames N] [--exact-fire] [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
@@ -52,9 +52,10 @@ using gem::bench::median;
 struct StonePixels {
     long centre = 0;  // pixels where the centre stone is met
     long others = 0;  // pixels where another stone is met and the centre is not
-    // The stone pass in the frame's order (stones in the piece's order, depth-tested, then the
-    // metal): the stone fragments shaded, and those of them the picture keeps (the nearest
-    // stone, with no metal in front). The rest is shading an order could save.
+    // The stone fragments a frame shades that draws the stones first (in the piece's order,
+    // depth-tested) and the metal after, and those of them the picture keeps (the nearest
+    // stone, with no metal in front): the frame's depth pass (StoneMethod::draw_depth) shades
+    // only the kept ones, and the difference is what it saves.
     long shaded = 0;
     long kept = 0;
 };
