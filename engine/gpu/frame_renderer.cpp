@@ -149,6 +149,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
     };
     // One pass timed alone (FrameWait::passes): from the glFinish before it to one after it.
+    if (wait == FrameWait::passes) glFinish();
     auto pass_start = Clock::now();
     const auto passed = [&](double& ms) {
         if (wait != FrameWait::passes) return;
@@ -156,8 +157,6 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         ms += ms_since(pass_start);
         pass_start = Clock::now();
     };
-    if (wait == FrameWait::passes) glFinish();
-    pass_start = Clock::now();
 
     const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
     if (setup_.piece != nullptr && !camera.orthographic()) {

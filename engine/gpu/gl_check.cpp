@@ -33,7 +33,7 @@ std::string gl_error_name(GLenum code) {
     return std::string(name) + " (" + code_text + ")";
 }
 
-Result<bool> gl_check(const std::string& where) {
+Result<bool> gl_check(std::string_view where) {
     std::string seen;
     // A lost context can report errors forever; a handful is enough to say what happened.
     for (int i = 0; i < 8; ++i) {
@@ -42,7 +42,7 @@ Result<bool> gl_check(const std::string& where) {
         seen += (seen.empty() ? "" : ", ") + gl_error_name(code);
     }
     if (seen.empty()) return true;
-    return Error{where + ": " + seen};
+    return Error{std::string(where) + ": " + seen};
 }
 
 }  // namespace gem::gpu

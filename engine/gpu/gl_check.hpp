@@ -3,6 +3,7 @@
 // render says which pass broke and how ("table pass: GL_INVALID_OPERATION (0x0502)").
 
 #include <string>
+#include <string_view>
 
 #include <GLES3/gl3.h>
 
@@ -12,7 +13,8 @@ namespace gem::gpu {
 
 std::string gl_error_name(GLenum code);
 
-// Drains the GL error queue; an error names `where` and every error code seen.
-Result<bool> gl_check(const std::string& where);
+// Drains the GL error queue; an error names `where` and every error code seen. A view, so the
+// passes that check every frame build no string unless something went wrong.
+Result<bool> gl_check(std::string_view where);
 
 }  // namespace gem::gpu

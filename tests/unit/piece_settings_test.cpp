@@ -11,6 +11,7 @@
 #include <array>
 #include <cmath>
 #include <map>
+#include <numbers>
 #include <string>
 
 #include "optics/material.hpp"
@@ -237,7 +238,7 @@ INSTANTIATE_TEST_SUITE_P(Settings, EverySetting,
 // vertices lies within the tolerance of the circle, and with one multiple fewer it would not.
 TEST(Settings, WallsAreCutIntoTheFewestSegmentsWithinTheChordTolerance) {
     auto chord_gap = [](double r, int n) {
-        const double step = 2.0 * 3.14159265358979323846 / n;
+        const double step = 2.0 * std::numbers::pi / n;
         const glm::dvec2 a(r, 0.0), b(r * std::cos(step), r * std::sin(step));
         return r - glm::length(0.5 * (a + b));
     };
