@@ -167,7 +167,9 @@ int main(int argc, char** argv) {
            "--method", o.method,
            "reference (CPU, exact) or a GPU stone method (" + gem::gpu::stone_method_names() + ")")
         ->check(CLI::IsMember(methods));
-    app.add_option("--db", o.gpu.database, "ray-table database for --method table")
+    app.add_option("--db", o.gpu.databases,
+                   "ray-table database for --method table; with --piece (repeatable), tables "
+                   "for its stones of that kind (gemtables build --width-mm W --min-elevation -90)")
         ->check(CLI::ExistingFile);
     app.add_flag("--blend", o.gpu.blend, "table: blend the two nearest stored views");
     app.add_option("--fire", o.gpu.fire,

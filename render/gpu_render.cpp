@@ -18,6 +18,7 @@
 #include "piece/metal_obj.hpp"
 #include "render/image.hpp"
 #include "scene/scene_build.hpp"
+#include "tables/sections.hpp"
 
 namespace gem {
 namespace {
@@ -32,6 +33,29 @@ double percentile(std::vector<double> v, double p) {
     std::sort(v.begin(), v.end());
     const auto i = static_cast<std::size_t>(p * static_cast<double>(v.size() - 1) + 0.5);
     return v[std::min(i, v.size() - 1)];
+}
+
+// Each database given for a piece, opened and put at the kind of stone it holds.
+Result<std::vector<std::shared_ptr<const Database>>> tables_for_kinds(
+    const Piece& piece, const std::vector<std::string>& files) {
+    std::vector<std::shared_ptr<const Database>> tables(piece.kinds.size());
+    for (const std::string& file : files) {
+        auto db = Database::open(file);
+        if (!db) return Error{db.error()};
+        auto opened = std::make_shared<const Database>(std::move(db).value());
+        bool placed = false;
+        for (std::size_t k = 0; k < piece.kinds.size() && !placed; ++k) {
+            if (tables[k] || !same_stored_stone(opened->stone(), piece.kinds[k])) continue;
+            tables[k] = opened;
+            placed = true;
+        }
+        if (!placed) {
+            return Error{"--db " + file + ": its stone ('" + opened->stone().name +
+                         "') is none of the piece's stones as the piece sizes them (gemtables "
+                         "build --width-mm W, W the piece's width_mm)"};
+        }
+    }
+    return tables;
 }
 
 }  // namespace
@@ -49,13 +73,20 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     setup.method = o.method;
     if (method->needs_database) {
         if (o.piece != nullptr) return fail("--method " + o.method + " draws one loose stone");
-        if (o.database.empty()) return fail("--method " + o.method + " needs --db FILE.gemdb");
-        auto db = Database::open(o.database);
+        if (o.databases.size() != 1) {
+            return fail("--method " + o.method + " needs one --db FILE.gemdb");
+        }
+        auto db = Database::open(o.databases.front());
         if (!db) return fail(db.error());
         setup.database = std::make_shared<const Database>(std::move(db).value());
         setup.material = setup.database->material();
     } else if (o.piece != nullptr) {
         setup.piece = o.piece;
+        auto tables = tables_for_kinds(*o.piece, o.databases);
+        if (!tables) return fail(tables.error());
+        setup.kind_tables = std::move(tables).value();
+    } else if (!o.databases.empty()) {
+        return fail("--db: the " + o.method + " method draws a loose stone without tables");
     } else {
         auto stone = build_stone(scene);
         if (!stone) return fail(stone.error());

@@ -4,6 +4,7 @@
 // time of every frame (glFinish-bounded) and the time spent streaming views.
 
 #include <string>
+#include <vector>
 
 #include "piece/piece.hpp"
 #include "render/tone_map.hpp"
@@ -12,8 +13,10 @@
 namespace gem {
 
 struct GpuRenderOptions {
-    std::string method;         // table, trace, phong
-    std::string database;       // table: the .gemdb file
+    std::string method;  // table, trace, phong
+    // table: the .gemdb file (one); a piece: tables for any of its kinds of stone, each drawn
+    // from the one whose stone it is (gpu/piece_tables.hpp)
+    std::vector<std::string> databases;
     bool blend = false;         // table: blend the two nearest stored views
     std::string fire = "none";  // trace: dispersion "none", "first" (first order) or "exact"
     std::string ring;           // "", "parametric" or an OBJ file

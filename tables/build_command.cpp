@@ -8,6 +8,7 @@
 
 #include "budget.hpp"
 #include "commands.hpp"
+#include "piece/stone_shape.hpp"
 #include "process_limits.hpp"
 #include "progress.hpp"
 #include "scene/stone_file.hpp"
@@ -81,6 +82,7 @@ int run_build(const BuildOptions& o) {
     }
     Result<Stone> loaded = load_stone_file(o.stone_file);
     if (!loaded) return fail(loaded.error());
+    if (o.width_mm > 0.0) loaded = stone_at_width(std::move(loaded).value(), o.width_mm);
     const Stone& stone = loaded.value();
 
     BuildParams params;

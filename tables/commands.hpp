@@ -11,6 +11,8 @@ namespace gem::tables {
 struct BuildOptions {
     std::string stone_file;
     std::string out;
+    // > 0: the stone scaled to this girdle width first, as a piece sizes it (piece tables).
+    double width_mm = 0.0;
     std::vector<std::uint32_t> levels{128, 256, 512};
     double spacing_deg = 5.0;  // the thesis stored a table every 0.1 rad (5.7°)
     double min_elevation_deg = -10.0;

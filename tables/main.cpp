@@ -35,6 +35,10 @@ int main(int argc, char** argv) {
     b->add_option("stone", build.stone_file, "stone description (TOML, config/stones/README.md)")
         ->required();
     b->add_option("-o,--out", build.out, "database to write (.gemdb)")->required();
+    b->add_option("--width-mm", build.width_mm,
+                  "scale the stone to this girdle width first, as a piece's width_mm does (a "
+                  "piece's stone drawn from tables)")
+        ->check(CLI::Range(0.1, 100.0));
     b->add_option("--levels", build.levels, "image sides per view, ascending")
         ->delimiter(',')
         ->capture_default_str();

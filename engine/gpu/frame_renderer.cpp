@@ -5,6 +5,7 @@
 
 #include "gpu/gl_check.hpp"
 #include "gpu/phong_method.hpp"
+#include "gpu/piece_tables.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "gpu/ring_renderer.hpp"
 
@@ -97,6 +98,13 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     auto method = entry->make(s, kinds);
     if (!method) return Error{method.error()};
     r.method_ = std::move(method).value();
+    if (s.piece != nullptr && !s.kind_tables.empty()) {
+        std::vector<Placement> placements;
+        for (const StoneFrame& frame : r.frames_) placements.push_back(frame.placement);
+        auto tabled = with_kind_tables(std::move(r.method_), s, kinds, r.kinds_, placements);
+        if (!tabled) return Error{"frame renderer: " + tabled.error()};
+        r.method_ = std::move(tabled).value();
+    }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
     const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;

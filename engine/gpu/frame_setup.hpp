@@ -6,6 +6,7 @@
 #include <memory>
 #include <optional>
 #include <string>
+#include <vector>
 
 #include "gpu/table_method.hpp"
 #include "gpu/trace_method.hpp"
@@ -38,6 +39,10 @@ struct FrameSetup {
     // stone drawn in its own frame (identical stones share their method's programs and stone
     // block), the piece's metal around them. Must outlive the renderer.
     const Piece* piece = nullptr;
+    // A piece's kinds drawn from ray-tables instead (piece_tables.hpp), by index into
+    // piece->kinds; null or missing: drawn by `method`. Each must hold its kind, orthographic,
+    // every direction stored.
+    std::vector<std::shared_ptr<const Database>> kind_tables;
 };
 
 // How one kind of stone is traced: the depth followed and how fire is coloured. The frame

@@ -50,13 +50,13 @@ std::size_t first_within(const std::vector<double>& errors, double budget) {
 Result<std::vector<ModelChoice>> choose_stone_models(FrameRenderer& renderer, const Camera& view,
                                                      double budget) {
     std::vector<ModelChoice> choices;
-    if (!renderer.model(0)) return choices;  // a method without models
     const std::size_t hero = renderer.kind_of(0);
     const bool one_kind = renderer.kind_count() == 1;
     if (one_kind && renderer.stone_count() < 2) return choices;  // a loose stone is the hero
     const FramebufferScope restore;
     for (std::size_t k = 0; k < renderer.kind_count(); ++k) {
         if (k == hero && !one_kind) continue;
+        if (!renderer.model(k)) continue;  // a method without models, or a kind from tables
         const Stone& stone = renderer.kind(k);
         const Placement& at = renderer.placement_of(renderer.first_of_kind(k));
         // The view's direction as this stone sees it, as an orbit about it at the view's scale.

@@ -44,7 +44,8 @@ struct ModelChoice {
 
 // Chooses and sets the model of every kind but the centre stone's (see above) for `view`,
 // drawing off screen (the caller's framebuffer and viewport are kept). For a method without
-// models (StoneMethod::model: all but the trace) nothing is chosen and the list is empty.
+// models (StoneMethod::model: all but the trace) nothing is chosen and the list is empty; nor
+// for a kind drawn from its tables (piece_tables.hpp).
 Result<std::vector<ModelChoice>> choose_stone_models(FrameRenderer& renderer, const Camera& view,
                                                      double budget = kStoneModelBudgetDeltaE);
 

@@ -66,6 +66,12 @@ std::uint32_t TableMethod::level_for(double pixels_across) const {
     return table_level_for(*database_, pixels_across, options_.max_level);
 }
 
+void TableMethod::prefetch(const Camera& camera, std::span<const ViewHeading> headings, bool wait) {
+    const double pixels_across = database_->camera().field_mm / camera.pixel_size();
+    cache_->prefetch(headings, level_for(pixels_across));
+    if (wait) cache_->wait_idle(std::chrono::seconds(60));
+}
+
 Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acquired,
                                                         TableFrameStats& stats) {
     for (std::size_t i = 0; i < gpu_views_.size(); ++i) {
@@ -122,10 +128,9 @@ Result<const TableMethod::GpuView*> TableMethod::upload(const AcquiredView& acqu
     auto ok = gl_check("table method: view upload");
     if (!ok) return Error{ok.error()};
 
-    // Two for a blend and one on its way in; older ones go.
-    constexpr std::size_t kGpuViews = 3;
+    // The least recently used beyond what the options keep go.
     gpu_views_.insert(gpu_views_.begin(), std::move(view));
-    if (gpu_views_.size() > kGpuViews) gpu_views_.pop_back();
+    if (gpu_views_.size() > std::max<std::size_t>(options_.gpu_views, 3)) gpu_views_.pop_back();
     ++stats.uploads;
     stats.upload_ms += ms_since(start);
     return gpu_views_.front().get();
@@ -282,9 +287,8 @@ class TableStones final : public StoneMethod {
     explicit TableStones(TableMethod table) : table_(std::move(table)) {}
 
     void prepare(const Camera& camera, const glm::dvec3& omega, bool wait) override {
-        const double pixels_across = table_.database().camera().field_mm / camera.pixel_size();
-        table_.cache().prefetch(-camera.forward(), omega, table_.level_for(pixels_across));
-        if (wait) table_.cache().wait_idle(std::chrono::seconds(60));
+        const ViewHeading heading{-camera.forward(), omega};
+        table_.prefetch(camera, std::span<const ViewHeading>(&heading, 1), wait);
     }
 
     Result<bool> draw(const std::vector<StoneFrame>& frames, const std::vector<std::size_t>& kinds,

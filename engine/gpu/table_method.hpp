@@ -6,6 +6,7 @@
 
 #include <array>
 #include <memory>
+#include <span>
 
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
@@ -28,6 +29,10 @@ struct TableOptions {
     bool wait_on_cold_start = true;
     // The highest level shown (a cheaper, coarser view for a slow GPU); -1: no cap.
     int max_level = -1;
+    // Stored views kept on the GPU, most recently used first: two for a blend and one on its
+    // way in. A piece whose stones of one kind are drawn from tables needs one (two in a blend)
+    // per stone, or every frame uploads each stone's view again.
+    std::size_t gpu_views = 3;
     ViewCacheOptions cache;
 };
 
@@ -60,6 +65,11 @@ class TableMethod {
     // camera the database cannot serve (perspective against orthographic tables, or another
     // eye distance), GL errors.
     Result<bool> draw(const StoneFrame& frame, TableFrameStats* stats = nullptr);
+
+    // Before a frame at `camera`: queues the views the stones heading as `headings` say (in the
+    // stone's frame) will reach, at the level that serves the stone at the camera's scale;
+    // `wait`: until they are decoded.
+    void prefetch(const Camera& camera, std::span<const ViewHeading> headings, bool wait);
 
     const Database& database() const { return *database_; }
     ViewCache& cache() { return *cache_; }

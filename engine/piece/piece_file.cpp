@@ -130,7 +130,7 @@ class PieceReader {
         if (!loaded) return where(key, loaded.error());
         Stone stone = std::move(loaded).value();
         if (choice.width_mm > 0.0) {
-            stone = scaled_stone(std::move(stone), choice.width_mm / girdle_width(stone));
+            stone = stone_at_width(std::move(stone), choice.width_mm);
         }
         return stone;
     }

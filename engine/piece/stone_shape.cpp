@@ -93,6 +93,11 @@ double girdle_width(const Stone& stone) {
     return std::min(hi.x - lo.x, hi.z - lo.z);
 }
 
+Stone stone_at_width(Stone stone, double width_mm) {
+    const double factor = width_mm / girdle_width(stone);
+    return scaled_stone(std::move(stone), factor);
+}
+
 double outline_radius(const Stone& stone, const glm::dvec3& u) {
     const ShearedRay ray(glm::dvec3(0.0), u);
     double far = 0.0;

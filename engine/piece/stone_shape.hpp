@@ -23,6 +23,9 @@ StoneExtent stone_extent(const Stone& stone);
 
 // The girdle's width as a jeweller measures it: the short side of its outline.
 double girdle_width(const Stone& stone);
+// The stone scaled to girdle width `width_mm`, as a piece sizes the stones it names (and
+// gemtables builds a piece's stone's tables: the same stone to the last bit).
+Stone stone_at_width(Stone stone, double width_mm);
 
 // How far the outline reaches from the centre along horizontal direction `u` (unit, y = 0):
 // the farthest crossing of that ray with the surface, so a non-convex outline counts too.

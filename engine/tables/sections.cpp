@@ -188,6 +188,19 @@ Result<Material> read_material_section(std::span<const std::uint8_t> bytes) {
     return finish(in, kName, std::move(material));
 }
 
+void write_stone_identity(ByteWriter& out, const Stone& stone) {
+    write_stone_section(out, stone);
+    write_material_section(out, stone.material);
+}
+
+bool same_stored_stone(const Stone& a, const Stone& b) {
+    ByteWriter first;
+    ByteWriter second;
+    write_stone_identity(first, a);
+    write_stone_identity(second, b);
+    return first.bytes() == second.bytes();
+}
+
 void write_camera_section(ByteWriter& out, const CameraModel& camera) {
     out.u8(static_cast<std::uint8_t>(camera.kind));
     out.f64(camera.distance_mm);

@@ -23,6 +23,10 @@ struct ParamsSection {
 void write_stone_section(ByteWriter& out, const Stone& stone);  // all but the material
 void write_material_section(ByteWriter& out, const Material& material);
 void write_camera_section(ByteWriter& out, const CameraModel& camera);
+// What a database's tables depend on of its stone: the stone and material sections, as stored.
+// Two stones with the same bytes are served by the same tables.
+void write_stone_identity(ByteWriter& out, const Stone& stone);
+bool same_stored_stone(const Stone& a, const Stone& b);
 void write_params_section(ByteWriter& out, const BuildParams& params, const PositionBox& box);
 void write_grid_section(ByteWriter& out, const ViewGrid& grid);
 

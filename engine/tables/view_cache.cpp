@@ -215,21 +215,31 @@ void ViewCache::demand(std::uint32_t view, std::uint32_t wanted_level) {
 
 std::size_t ViewCache::prefetch(const glm::dvec3& direction, const glm::dvec3& angular_velocity,
                                 std::uint32_t wanted_level) {
+    const ViewHeading heading{direction, angular_velocity};
+    return prefetch(std::span<const ViewHeading>(&heading, 1), wanted_level);
+}
+
+std::size_t ViewCache::prefetch(std::span<const ViewHeading> headings, std::uint32_t wanted_level) {
     wanted_level = std::min(wanted_level, levels_ - 1);
-    const std::vector<std::uint32_t> ahead =
-        views_ahead(source_->grid(), direction, angular_velocity, options_.prefetch_horizon_s,
-                    options_.prefetch_max_views);
+    std::vector<std::vector<std::uint32_t>> ahead;
+    ahead.reserve(headings.size());
+    for (const ViewHeading& h : headings) {
+        ahead.push_back(views_ahead(source_->grid(), h.direction, h.angular_velocity,
+                                    options_.prefetch_horizon_s, options_.prefetch_max_views));
+    }
     std::lock_guard lock(mutex_);
     std::erase_if(queue_, [](const Request& r) { return r.kind == Kind::prefetch; });
     std::uint64_t order = 0;
     std::size_t queued = 0;
     for (std::uint32_t level = 0; level <= wanted_level; ++level) {
-        for (std::uint32_t view : ahead) {
-            const Key k = key(view, level);
-            if (!wanted(k)) continue;
-            const std::size_t before = queue_.size();
-            enqueue(k, Kind::prefetch, order++);
-            queued += queue_.size() - before;
+        for (const std::vector<std::uint32_t>& views : ahead) {
+            for (std::uint32_t view : views) {
+                const Key k = key(view, level);
+                if (!wanted(k)) continue;
+                const std::size_t before = queue_.size();
+                enqueue(k, Kind::prefetch, order++);
+                queued += queue_.size() - before;
+            }
         }
     }
     if (queued > 0) work_ready_.notify_one();

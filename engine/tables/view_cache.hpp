@@ -12,6 +12,7 @@
 #include <list>
 #include <memory>
 #include <mutex>
+#include <span>
 #include <string>
 #include <thread>
 #include <unordered_map>
@@ -71,6 +72,12 @@ struct ViewCacheOptions {
     std::uint32_t max_demand_requests = 16;
 };
 
+// Where one stone's view direction is and how it turns (ViewCache::prefetch), in its frame.
+struct ViewHeading {
+    glm::dvec3 direction{0.0, 0.0, 1.0};
+    glm::dvec3 angular_velocity{0.0};  // axis × rad/s
+};
+
 // What acquire() found. `view` is null when nothing usable is resident yet (cold start).
 struct AcquiredView {
     std::shared_ptr<const DecodedView> view;
@@ -122,6 +129,10 @@ class ViewCache {
     // number of requests queued.
     std::size_t prefetch(const glm::dvec3& direction, const glm::dvec3& angular_velocity,
                          std::uint32_t wanted_level);
+    // The same for several stones of one kind, placed apart in a piece, each with its own
+    // heading (direction and turn, in the stone's frame): their views ahead in turn, every
+    // stone's coarsest first. Replaces the previous prefetch.
+    std::size_t prefetch(std::span<const ViewHeading> headings, std::uint32_t wanted_level);
 
     bool resident(std::uint32_t view, std::uint32_t level) const;
     bool bad(std::uint32_t view, std::uint32_t level) const;

@@ -61,8 +61,7 @@ const std::string& DesignTables::key_of(const CatalogueStone& stone) const {
     // What the tables depend on: the stone and material as a database stores them, the
     // build settings and the format.
     ByteWriter bytes;
-    write_stone_section(bytes, *stone.designed);
-    write_material_section(bytes, stone.designed->material);
+    write_stone_identity(bytes, *stone.designed);
     bytes.u16(gemdb::kVersionMajor);
     bytes.u16(gemdb::kVersionMinor);
     bytes.u32(static_cast<std::uint32_t>(config_.level_px));

@@ -11,6 +11,27 @@
 
 namespace gem::gpu_test {
 
+Result<std::shared_ptr<const Database>> build_database(const Stone& stone, const std::string& name,
+                                                       double spacing_deg, double min_elevation_deg,
+                                                       bool dispersion) {
+    BuildParams params;
+    params.levels = {64, 128};
+    params.grid.spacing_rad = spacing_deg * std::numbers::pi / 180.0;
+    params.grid.min_elevation_rad = min_elevation_deg * std::numbers::pi / 180.0;
+    params.max_depth = 8;
+    params.weight_threshold = 1e-4;
+    params.dispersion = dispersion;
+    auto grid = ViewGrid::build(params.grid, stone.symmetry);
+    if (!grid) return Error{grid.error()};
+    std::filesystem::create_directories(GEM_ARTIFACT_DIR);
+    const std::filesystem::path path = std::filesystem::path(GEM_ARTIFACT_DIR) / (name + ".gemdb");
+    auto written = tables::trace_and_write(path, stone, params, grid.value(), 2);
+    if (!written) return Error{written.error()};
+    auto db = Database::open(path);
+    if (!db) return Error{db.error()};
+    return std::make_shared<const Database>(std::move(db).value());
+}
+
 Result<const TableFixture*> round_brilliant_database(double spacing_deg, bool dispersion) {
     static std::map<std::pair<double, bool>, std::unique_ptr<TableFixture>> built;
     auto& slot = built[{spacing_deg, dispersion}];
@@ -19,24 +40,12 @@ Result<const TableFixture*> round_brilliant_database(double spacing_deg, bool di
     if (!stone) return Error{stone.error()};
     auto fixture = std::make_unique<TableFixture>();
     fixture->stone = std::move(stone).value();
-    BuildParams params;
-    params.levels = {64, 128};
-    params.grid.spacing_rad = spacing_deg * std::numbers::pi / 180.0;
-    params.grid.min_elevation_rad = -10.0 * std::numbers::pi / 180.0;
-    params.max_depth = 8;
-    params.weight_threshold = 1e-4;
-    params.dispersion = dispersion;
-    auto grid = ViewGrid::build(params.grid, fixture->stone.symmetry);
-    if (!grid) return Error{grid.error()};
-    std::filesystem::create_directories(GEM_ARTIFACT_DIR);
-    fixture->path =
-        std::filesystem::path(GEM_ARTIFACT_DIR) /
-        ("gpu_round_" + std::to_string(int(spacing_deg)) + (dispersion ? "_dn" : "") + ".gemdb");
-    auto written = tables::trace_and_write(fixture->path, fixture->stone, params, grid.value(), 2);
-    if (!written) return Error{written.error()};
-    auto db = Database::open(fixture->path);
+    const std::string name =
+        "gpu_round_" + std::to_string(int(spacing_deg)) + (dispersion ? "_dn" : "");
+    auto db = build_database(fixture->stone, name, spacing_deg, -10.0, dispersion);
     if (!db) return Error{db.error()};
-    fixture->database = std::make_shared<const Database>(std::move(db).value());
+    fixture->database = std::move(db).value();
+    fixture->path = fixture->database->path();
     slot = std::move(fixture);
     return slot.get();
 }

@@ -6,6 +6,7 @@
 
 #include <filesystem>
 #include <memory>
+#include <string>
 
 #include "geometry/stone.hpp"
 #include "gpu/environment_cube.hpp"
@@ -28,6 +29,12 @@ struct TableFixture {
 // elevation, depth 8, built into the artefact folder (once per name per program).
 Result<const TableFixture*> round_brilliant_database(double spacing_deg = 12.0,
                                                      bool dispersion = false);
+
+// Tables of `stone` (levels {64, 128}, depth 8, views every `spacing_deg` at or above
+// `min_elevation_deg`), built into the artefact folder as `name`.gemdb and opened.
+Result<std::shared_ptr<const Database>> build_database(const Stone& stone, const std::string& name,
+                                                       double spacing_deg, double min_elevation_deg,
+                                                       bool dispersion = false);
 
 // The camera that looks along `view` (from the stone toward the eye) with `roll_deg`, its
 // pixels the same size as the stored views' at level side `side`, `image` pixels square.

@@ -13,8 +13,11 @@
 #include <string>
 #include <thread>
 
+#include "piece/piece_file.hpp"
+#include "piece/stone_shape.hpp"
 #include "render/image.hpp"
 #include "tables/reader.hpp"
+#include "tables/sections.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {
@@ -138,6 +141,31 @@ TEST_F(GemtablesCli, IdleBuildsTheSameBytesAndAMemoryBoundFailsCleanly) {
     EXPECT_NE(failed.output.find("--memory-mb"), std::string::npos) << failed.output;
     EXPECT_EQ(failed.output.find("terminate called"), std::string::npos) << failed.output;
     EXPECT_FALSE(fs::exists(starved));
+}
+
+// A piece sizes the stones it names (width_mm); tables built with the same width hold the
+// piece's stone to the last bit, so the frame renderer draws it from them (piece_tables.hpp).
+TEST_F(GemtablesCli, TablesBuiltAtAPiecesWidthHoldThePiecesStone) {
+    write_text(dir_ / "ring.toml",
+               "[piece]\nname = \"ring\"\nsetting = \"solitaire\"\n\n[centre]\nstone = "
+               "\"tiny.toml\"\nwidth_mm = 3.0\n");
+    auto piece = load_piece(dir_ / "ring.toml");
+    ASSERT_TRUE(piece) << piece.error();
+    const char* options = "--levels 4 --spacing 50 --min-elevation -90 --jobs 2";
+    const fs::path sized = dir_ / "sized.gemdb";
+    const fs::path unsized = dir_ / "unsized.gemdb";
+    const Outcome built =
+        run("build " + stone_.string() + " -o " + sized.string() + " --width-mm 3 " + options);
+    ASSERT_EQ(built.status, 0) << built.output;
+    ASSERT_EQ(run("build " + stone_.string() + " -o " + unsized.string() + " " + options).status,
+              0);
+    auto a = Database::open(sized);
+    auto b = Database::open(unsized);
+    ASSERT_TRUE(a && b);
+    EXPECT_TRUE(same_stored_stone(a.value().stone(), piece.value().kinds[0]));
+    EXPECT_FALSE(same_stored_stone(b.value().stone(), piece.value().kinds[0]));
+    // The width is the stone's girdle width, as a jeweller measures it.
+    EXPECT_NEAR(girdle_width(a.value().stone()), 3.0, 1e-9);
 }
 
 TEST_F(GemtablesCli, VerifyFailsOnDamagedCopies) {

@@ -146,6 +146,36 @@ TEST(TablesCacheStream, PrefetchDecodesTheViewsAheadCoarseFirst) {
     EXPECT_EQ(order.front().first, first_met);
 }
 
+// A piece's stones of one kind face the camera from different directions: one prefetch for
+// all of them decodes what lies ahead of each, every stone's coarse level first.
+TEST(TablesCacheStream, PrefetchForSeveralStonesDecodesWhatLiesAheadOfEach) {
+    auto source = std::make_shared<FakeSource>(0.3, 2, 100);
+    ViewCache cache(source);
+    const ViewGrid& grid = source->grid();
+    // Two stones turned half a turn apart about y, the view turning about +y at 1.2 rad/s.
+    const double elevation = 0.3;
+    const ViewHeading headings[2] = {{from_angles(0.0, elevation), {0.0, 1.2, 0.0}},
+                                     {from_angles(3.0, elevation), {0.0, 1.2, 0.0}}};
+    const std::size_t queued = cache.prefetch(headings, 1);
+    ASSERT_TRUE(cache.wait_idle(5s));
+    const auto order = source->decoded();
+    ASSERT_EQ(order.size(), queued);
+    for (double start : {0.0, 3.0}) {
+        const std::uint32_t ahead = grid.nearest(from_angles(start + 0.6, elevation)).view;
+        const std::uint32_t behind = grid.nearest(from_angles(start - 0.6, elevation)).view;
+        EXPECT_TRUE(cache.resident(ahead, 0)) << start;
+        EXPECT_TRUE(cache.resident(ahead, 1)) << start;
+        EXPECT_FALSE(cache.resident(behind, 0)) << start;
+    }
+    std::size_t last_coarse = 0;
+    std::size_t first_fine = order.size();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (order[i].second == 0) last_coarse = i;
+        if (order[i].second == 1) first_fine = std::min(first_fine, i);
+    }
+    EXPECT_LT(last_coarse, first_fine);
+}
+
 TEST(TablesCacheStream, DemandOutranksPrefetch) {
     auto source = std::make_shared<FakeSource>(0.3, 1, 100);
     source->delay = 30ms;
