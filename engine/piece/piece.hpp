@@ -7,6 +7,7 @@
 // rings are pieces of one stone, made by the solitaire setting).
 
 #include <cstddef>
+#include <filesystem>
 #include <string>
 #include <vector>
 
@@ -29,10 +30,19 @@ struct Hold {
     double radius = 0.0;
 };
 
+// Where a kind of stone came from: its stone description and the girdle width the piece sized
+// it to (0: the description's own). What makes the same stone again elsewhere, e.g. its tables
+// (gemtables build --width-mm).
+struct KindSource {
+    std::filesystem::path description;
+    double width_mm = 0.0;
+};
+
 struct Piece {
     std::string name;
     std::vector<Stone> kinds;
-    std::vector<PieceStone> stones;  // the first is the centre stone, the hero of the picture
+    std::vector<KindSource> kind_sources;  // by kind, for a piece read from a file; else empty
+    std::vector<PieceStone> stones;        // the first is the centre stone, the hero of the picture
     MetalMesh metal;
     std::vector<Hold> holds;
 

@@ -142,6 +142,7 @@ class PieceReader {
         Result<Stone> stone = load_sized(choice, key);
         if (!stone) return Error{stone.error()};
         piece.kinds.push_back(std::move(stone).value());
+        piece.kind_sources.push_back({choice.file, choice.width_mm});
         kinds_[id] = piece.kinds.size() - 1;
         return piece.kinds.size() - 1;
     }
@@ -149,6 +150,7 @@ class PieceReader {
     Result<Piece> read_setting(const toml::table& doc) {
         params_.kind = *parse_setting_kind(setting_);
         std::optional<Stone> stones[2];
+        std::vector<KindSource> sources;  // the kinds the setting makes, in its order
         const char* tables[2] = {"centre", "small"};
         for (int i = 0; i < 2; ++i) {
             const toml::table* t = doc[tables[i]].as_table();
@@ -162,11 +164,14 @@ class PieceReader {
             Result<Stone> stone = load_sized(choice, std::string(tables[i]) + ".stone");
             if (!stone) return Error{stone.error()};
             stones[i] = std::move(stone).value();
+            sources.push_back({choice.file, choice.width_mm});
         }
         if (doc["stone"])
             return Error{name_ + ": [[stone]] is for free pieces (setting = \"free\")"};
         Result<Piece> made = make_setting(params_, name_value_, stones[0], stones[1]);
         if (!made) return setting_error(made.error());
+        // The setting's kinds are its centre's and small stones', in that order.
+        if (made.value().kinds.size() == sources.size()) made.value().kind_sources = sources;
         return made;
     }
 

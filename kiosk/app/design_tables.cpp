@@ -33,16 +33,30 @@ std::string fixed(double value, int decimals) {
     return text;
 }
 
-// How log lines name a design.
-std::string named(const std::string& name) {
-    return "design '" + name + "'";
-}
-
-bool is_design(const CatalogueStone& stone) {
-    return !stone.design.empty() && stone.designed != nullptr;
-}
-
 }  // namespace
+
+std::vector<TabledStone> tabled_stones(const CatalogueStone& entry) {
+    std::vector<TabledStone> out;
+    if (!entry.design.empty() && entry.designed != nullptr) {
+        out.push_back(
+            {0, "design '" + entry.name + "'", entry.design, 0.0, false, entry.designed.get()});
+        return out;
+    }
+    if (entry.placed == nullptr) return out;
+    const Piece& piece = *entry.placed;
+    if (piece.kind_sources.size() != piece.kinds.size()) return out;  // made in code
+    for (std::size_t k = 0; k < piece.kinds.size(); ++k) {
+        const Stone& stone = piece.kinds[k];
+        // A convex stone is traced by its planes or its walk, as cheap as its tables.
+        if (stone.convex) continue;
+        const KindSource& source = piece.kind_sources[k];
+        std::string size;
+        if (source.width_mm > 0.0) size = fixed(source.width_mm, 1) + " mm ";
+        out.push_back({k, "piece '" + entry.name + "': its " + size + "stone '" + stone.name + "'",
+                       source.description, source.width_mm, true, &stone});
+    }
+    return out;
+}
 
 DesignTables::DesignTables(DesignsConfig config, fs::path dir)
     : config_(std::move(config)), dir_(std::move(dir)) {}
@@ -54,27 +68,39 @@ DesignTables::~DesignTables() {
     if (check_.valid()) check_.wait();
 }
 
-const std::string& DesignTables::key_of(const CatalogueStone& stone) const {
-    static const std::string none;
-    if (!is_design(stone)) return none;
-    if (stone.designed.get() == keyed_address_ && !keyed_stone_.expired()) return key_;
+std::string DesignTables::key_of(const TabledStone& stone) const {
     // What the tables depend on: the stone and material as a database stores them, the
     // build settings and the format.
     ByteWriter bytes;
-    write_stone_identity(bytes, *stone.designed);
+    write_stone_identity(bytes, *stone.stone);
     bytes.u16(gemdb::kVersionMajor);
     bytes.u16(gemdb::kVersionMinor);
     bytes.u32(static_cast<std::uint32_t>(config_.level_px));
     bytes.f64(config_.spacing_deg);
     bytes.u32(static_cast<std::uint32_t>(config_.depth));
     bytes.f64(config_.threshold);
+    // A piece's stone stores every direction; a design's the band above −10°, as before.
+    if (stone.whole_sphere) bytes.u8(1);
     char key[24];
     std::snprintf(key, sizeof key, "%016llx",
                   static_cast<unsigned long long>(XXH64(bytes.bytes().data(), bytes.size(), 0)));
-    keyed_stone_ = stone.designed;
-    keyed_address_ = stone.designed.get();
-    key_ = key;
-    return key_;
+    return key;
+}
+
+const std::vector<DesignTables::Keyed>& DesignTables::keyed(const CatalogueStone& stone) const {
+    static const std::vector<Keyed> none;
+    std::shared_ptr<const void> owner = stone.designed;
+    if (!owner) owner = stone.placed;
+    if (!owner) return none;
+    if (owner.get() == keyed_address_ && !keyed_owner_.expired()) return keyed_;
+    keyed_.clear();
+    for (TabledStone& t : tabled_stones(stone)) {
+        std::string key = key_of(t);
+        keyed_.push_back({std::move(t), std::move(key)});
+    }
+    keyed_owner_ = owner;
+    keyed_address_ = owner.get();
+    return keyed_;
 }
 
 fs::path DesignTables::file_of(const std::string& key, const char* extension) const {
@@ -82,30 +108,36 @@ fs::path DesignTables::file_of(const std::string& key, const char* extension) co
 }
 
 fs::path DesignTables::tables_path(const CatalogueStone& stone) const {
-    const std::string key = key_of(stone);
-    return key.empty() ? fs::path() : file_of(key, ".gemdb");
+    const std::vector<Keyed>& k = keyed(stone);
+    return k.empty() ? fs::path() : file_of(k.front().key, ".gemdb");
 }
 
-std::shared_ptr<const Database> DesignTables::tables_for(const CatalogueStone& stone) const {
-    const auto found = entries_.find(key_of(stone));
-    if (found == entries_.end() || found->second.state != State::tables) return nullptr;
-    return found->second.database;
+DesignTables::KindTables DesignTables::tables_for(const CatalogueStone& stone) const {
+    KindTables tables;
+    for (const Keyed& k : keyed(stone)) {
+        const auto found = entries_.find(k.key);
+        if (found == entries_.end() || found->second.state != State::tables) continue;
+        if (tables.size() <= k.stone.kind) tables.resize(k.stone.kind + 1);
+        tables[k.stone.kind] = found->second.database;
+    }
+    return tables;
 }
 
-DesignTables::Entry& DesignTables::entry_for(const CatalogueStone& stone) {
-    const std::string& key = key_of(stone);
-    Entry& e = entries_[key];
+DesignTables::Entry& DesignTables::entry_for(const Keyed& keyed) {
+    Entry& e = entries_[keyed.key];
     if (e.state == State::unknown) {
-        e.name = stone.name;
-        e.design = stone.design;
-        e.dispersion = stone.designed->material.disperses();
-        look_on_disk(key, e);
+        e.who = keyed.stone.who;
+        e.design = keyed.stone.description;
+        e.width_mm = keyed.stone.width_mm;
+        e.whole_sphere = keyed.stone.whole_sphere;
+        e.dispersion = keyed.stone.stone->material.disperses();
+        look_on_disk(keyed.key, e);
     }
     return e;
 }
 
 void DesignTables::look_on_disk(const std::string& key, Entry& e) {
-    const std::string who = named(e.name);
+    const std::string& who = e.who;
     std::error_code ec;
     if (config_.tables == DesignTablesMode::never) {
         e.state = State::trace_holds;
@@ -137,10 +169,17 @@ void DesignTables::look_on_disk(const std::string& key, Entry& e) {
     e.trace_ms.reserve(kTimedFrames);
 }
 
-void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
+void DesignTables::frame_drawn(const CatalogueStone& stone, const KindTables& drawn,
                                int frames_since_scene, double draw_ms, double budget_ms) {
-    if (!is_design(stone) || frames_since_scene < kWarmupFrames) return;
-    Entry& e = entry_for(stone);
+    if (frames_since_scene < kWarmupFrames) return;
+    for (const Keyed& k : keyed(stone)) {
+        const bool from_tables = k.stone.kind < drawn.size() && drawn[k.stone.kind] != nullptr;
+        judge_frame(entry_for(k), k.key, from_tables, draw_ms, budget_ms);
+    }
+}
+
+void DesignTables::judge_frame(Entry& e, const std::string& key, bool from_tables, double draw_ms,
+                               double budget_ms) {
     if (e.state == State::measuring && !from_tables) {
         e.trace_ms.push_back(draw_ms);
         if (e.trace_ms.size() < kTimedFrames) return;
@@ -148,7 +187,7 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         e.trace_ms.clear();
         if (!p90) return;  // no usable frame: time it again
         e.trace_p90_ms = *p90;
-        const std::string who = named(e.name);
+        const std::string& who = e.who;
         if (!(*p90 > budget_ms)) {
             e.state = State::trace_holds;
             log_info(who + ": the trace holds the frame budget (p90 " + fixed(*p90, 1) +
@@ -157,7 +196,6 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         }
         const std::string over_budget = who + ": the trace draws it in p90 " + fixed(*p90, 1) +
                                         " ms, over the " + fixed(budget_ms, 1) + " ms budget: ";
-        const std::string& key = key_of(stone);
         std::error_code ec;
         if (fs::exists(file_of(key, ".gemdb"), ec)) {
             // Built by an earlier run that stopped before timing them.
@@ -178,12 +216,11 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
         e.table_ms.clear();
         if (!p90) return;
         e.fresh = false;
-        const std::string who = named(e.name);
+        const std::string& who = e.who;
         const std::string figures =
             "p90 " + fixed(*p90, 1) + " ms against the trace's " + fixed(e.trace_p90_ms, 1) + " ms";
         // The verdict is kept beside the tables, so that a later run trusts them, or builds
         // them no more.
-        const std::string& key = key_of(stone);
         const std::string verdict = "tables " + figures + "\n";
         const bool pay = *p90 < e.trace_p90_ms;
         if (auto written = write_file_atomic(file_of(key, pay ? ".pays" : ".trace"), verdict.data(),
@@ -210,7 +247,9 @@ void DesignTables::frame_drawn(const CatalogueStone& stone, bool from_tables,
 bool DesignTables::dispatch(const CatalogueStone* shown) {
     take_build_output();
     take_check();
-    if (shown != nullptr && is_design(*shown)) entry_for(*shown);
+    if (shown != nullptr) {
+        for (const Keyed& k : keyed(*shown)) entry_for(k);
+    }
     if (!build_) start_next_build();
     if (!check_.valid()) {
         // Tables found on disk, or just built, wait for their check one at a time.
@@ -221,8 +260,10 @@ bool DesignTables::dispatch(const CatalogueStone* shown) {
             }
         }
     }
-    const bool switched =
-        !switched_key_.empty() && shown != nullptr && switched_key_ == key_of(*shown);
+    bool switched = false;
+    if (!switched_key_.empty() && shown != nullptr) {
+        for (const Keyed& k : keyed(*shown)) switched = switched || k.key == switched_key_;
+    }
     switched_key_.clear();
     return switched;
 }
@@ -238,7 +279,7 @@ void DesignTables::take_check() {
     }
     Result<std::shared_ptr<const Database>> checked = check_.get();
     Entry& e = entries_[check_key_];
-    const std::string who = named(e.name);
+    const std::string& who = e.who;
     if (checked) {
         e.state = State::tables;
         e.database = std::move(checked).value();
@@ -269,7 +310,7 @@ void DesignTables::start_next_build() {
         queue_.erase(queue_.begin());
         Entry& e = entries_[key];
         if (e.state != State::waiting) continue;
-        const std::string who = named(e.name);
+        const std::string& who = e.who;
         std::error_code ec;
         fs::create_directories(dir_, ec);
         if (ec) {
@@ -297,6 +338,17 @@ void DesignTables::start_next_build() {
             "--memory-mb",
             std::to_string(config_.memory_mb)};
         if (e.dispersion) argv.push_back("--dispersion");
+        if (e.width_mm > 0.0) {
+            argv.push_back("--width-mm");
+            // Every digit: the builder must size the stone to the piece's very bits.
+            char width[32];
+            std::snprintf(width, sizeof width, "%.17g", e.width_mm);
+            argv.push_back(width);
+        }
+        if (e.whole_sphere) {
+            argv.push_back("--min-elevation");
+            argv.push_back("-90");
+        }
         if (config_.jobs > 0) {
             argv.push_back("--jobs");
             argv.push_back(std::to_string(config_.jobs));
@@ -325,11 +377,11 @@ void DesignTables::take_build_output() {
     for (const std::string& line : build_->read_lines()) {
         // Its progress every tenth is for a debugging eye; the rest says what it does.
         const bool progress = line.find(" tables), elapsed ") != std::string::npos;
-        log(progress ? LogLevel::debug : LogLevel::info, named(e.name) + ": " + line);
+        log(progress ? LogLevel::debug : LogLevel::info, e.who + ": " + line);
         build_last_line_ = line;
     }
     if (!build_->ended()) return;
-    const std::string who = named(e.name);
+    const std::string& who = e.who;
     const bool ok = build_->succeeded();
     const std::string end = build_->describe_end();
     build_.reset();

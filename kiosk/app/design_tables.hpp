@@ -1,7 +1,11 @@
 #pragma once
 // Tables for the designs in a catalogue (catalogue.hpp: a stone that names a stone description
-// instead of a database). A design is shown at once by the exact trace; its tables are built in
-// the background when they pay, and switched to between two frames:
+// instead of a database) and for the non-convex stones of its pieces (a heart in a three-stone
+// ring: traced by testing every triangle, it costs far more per pixel than a convex stone). Such
+// a stone is shown at once by the exact trace; its tables are built in the background when they
+// pay, and switched to between two frames (a piece's frame is timed whole, each of its
+// non-convex kinds judged by it; their tables store every direction, sized as the piece sizes
+// the stone: gpu/piece_tables.hpp):
 //
 //   measuring   its trace frames are timed (six, after the first two, which compile shaders,
 //               judged by their 90th percentile as the method probe judges); within the frame
@@ -38,6 +42,21 @@
 
 namespace gem::kiosk {
 
+// A stone whose tables the kiosk can build: a design entry's stone (kind 0), or a piece's
+// non-convex stone (its kind).
+struct TabledStone {
+    std::size_t kind = 0;
+    std::string who;  // for log lines: "design 'Heart'", "piece 'Trio': its 4 mm stone 'heart'"
+    std::filesystem::path description;
+    double width_mm = 0.0;         // > 0: sized to this girdle width, as the piece sizes it
+    bool whole_sphere = false;     // a piece turns its stones every way: every direction stored
+    const Stone* stone = nullptr;  // the entry's design or piece keeps it
+};
+
+// The stones of `entry` tables can serve: a design's one stone; a piece's non-convex stones that
+// came from a description; none for a database.
+std::vector<TabledStone> tabled_stones(const CatalogueStone& entry);
+
 class DesignTables {
   public:
     // `dir`: where tables are kept (state_dir/tables); made when the first build starts.
@@ -46,12 +65,14 @@ class DesignTables {
     DesignTables(const DesignTables&) = delete;
     DesignTables& operator=(const DesignTables&) = delete;
 
-    // The tables to draw `stone` with, or null: the trace (also for stones with a database).
-    std::shared_ptr<const Database> tables_for(const CatalogueStone& stone) const;
+    // The tables to draw `stone`'s kinds with, by kind (a design's one stone is kind 0), null
+    // where the trace draws it; empty when no kind has tables (also for a database).
+    using KindTables = std::vector<std::shared_ptr<const Database>>;
+    KindTables tables_for(const CatalogueStone& stone) const;
 
-    // A frame of `stone` was drawn in `draw_ms`, from its tables or by the trace;
+    // A frame of `stone` was drawn in `draw_ms` with `drawn` (what tables_for gave its scene);
     // `frames_since_scene` counts the frames since its scene was made (the first compile).
-    void frame_drawn(const CatalogueStone& stone, bool from_tables, int frames_since_scene,
+    void frame_drawn(const CatalogueStone& stone, const KindTables& drawn, int frames_since_scene,
                      double draw_ms, double budget_ms);
 
     // Reads the running build's output, takes finished builds and checks, starts the next
@@ -64,7 +85,7 @@ class DesignTables {
     // A build or a check is running: dispatch() wants calling now and then.
     bool busy() const { return build_ != nullptr || check_.valid(); }
 
-    // The file `stone`'s tables are (or would be) kept in.
+    // The file the tables of `stone`'s first tabled stone are (or would be) kept in.
     std::filesystem::path tables_path(const CatalogueStone& stone) const;
 
   private:
@@ -81,8 +102,10 @@ class DesignTables {
     };
     struct Entry {
         State state = State::unknown;
-        std::string name;
+        std::string who;               // for log lines (TabledStone::who)
         std::filesystem::path design;  // the description the builder reads
+        double width_mm = 0.0;         // > 0: the builder sizes the stone so
+        bool whole_sphere = false;     // every direction stored
         bool dispersion = false;       // the material disperses: fire is stored
         bool fresh = false;            // built in this run: still to be timed (auto)
         std::vector<double> trace_ms;
@@ -92,10 +115,18 @@ class DesignTables {
         double build_started_s = 0.0;
     };
 
-    // The stone's key (empty for a stone that is not a design); the last one is kept, so the
-    // frames of one stone hash it once.
-    const std::string& key_of(const CatalogueStone& stone) const;
-    Entry& entry_for(const CatalogueStone& stone);
+    // A tabled stone and the key its files are named by.
+    struct Keyed {
+        TabledStone stone;
+        std::string key;
+    };
+    // `stone`'s tabled stones, keyed; the last entry's are kept, so the frames of one entry
+    // list and hash them once.
+    const std::vector<Keyed>& keyed(const CatalogueStone& stone) const;
+    std::string key_of(const TabledStone& stone) const;
+    Entry& entry_for(const Keyed& keyed);
+    void judge_frame(Entry& e, const std::string& key, bool from_tables, double draw_ms,
+                     double budget_ms);
     void look_on_disk(const std::string& key, Entry& entry);
     void start_check(const std::string& key, const std::filesystem::path& file);
     void take_check();
@@ -114,9 +145,9 @@ class DesignTables {
     std::future<Result<std::shared_ptr<const Database>>> check_;
     std::string check_key_;
     std::string switched_key_;  // an entry whose use of tables changed since dispatch()
-    mutable std::weak_ptr<const Stone> keyed_stone_;
-    mutable const Stone* keyed_address_ = nullptr;
-    mutable std::string key_;
+    mutable std::weak_ptr<const void> keyed_owner_;  // the design or piece last listed
+    mutable const void* keyed_address_ = nullptr;
+    mutable std::vector<Keyed> keyed_;
 };
 
 }  // namespace gem::kiosk

@@ -284,14 +284,24 @@ void KioskSession::rebuild_scene(double now_s) {
     if (!selection_->has_stone()) return;
     if (config_.render.method == kAutoMethod) choose_render_method();
     frames_since_scene_ = 0;
-    // A design whose tables are built and checked is drawn from them (design_tables.hpp).
+    // A design whose tables are built and checked is drawn from them, as are a piece's stones
+    // whose tables are (design_tables.hpp).
     CatalogueStone stone = selection_->stone();
     RenderChoice render = render_;
-    if (auto tables = design_tables_->tables_for(stone)) {
-        stone.opened = std::move(tables);
+    scene_tables_ = design_tables_->tables_for(stone);
+    const bool piece = stone.placed != nullptr;
+    if (!scene_tables_.empty() && !piece) {
+        stone.opened = scene_tables_.front();
         render.method = "table";
     }
-    auto made = StoneScene::make(stone, selection_->look(), render);
+    auto made = StoneScene::make(stone, selection_->look(), render,
+                                 piece ? scene_tables_ : DesignTables::KindTables{});
+    if (!made && !scene_tables_.empty()) {
+        // Tables that do not serve the stone (another build of it): the trace draws it.
+        log_error(made.error() + "; drawn without its tables");
+        scene_tables_.clear();
+        made = StoneScene::make(selection_->stone(), selection_->look(), render_);
+    }
     if (!made) {
         log_error(made.error());
         return;
@@ -491,7 +501,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     notifier_.frame_presented(done_s);
     if (scene_ && selection_->has_stone()) {
         design_tables_->frame_drawn(
-            selection_->stone(), scene_->has_database(), frames_since_scene_++, record.draw_ms,
+            selection_->stone(), scene_tables_, frames_since_scene_++, record.draw_ms,
             frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
                             config_.render.auto_headroom));
     }

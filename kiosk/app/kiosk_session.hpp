@@ -102,6 +102,7 @@ class KioskSession {
     bool scene_stale_ = true;
     int frames_since_scene_ = 0;
     std::unique_ptr<DesignTables> design_tables_;  // designs' tables, built in the background
+    DesignTables::KindTables scene_tables_;        // the tables the scene was made with
     RenderChoice render_;
     std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
 

@@ -47,9 +47,9 @@ Result<MetalMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) 
 
 }  // namespace
 
-Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone,
-                                                     const LookChoice& look,
-                                                     const RenderChoice& render) {
+Result<std::unique_ptr<StoneScene>> StoneScene::make(
+    const CatalogueStone& stone, const LookChoice& look, const RenderChoice& render,
+    const std::vector<std::shared_ptr<const Database>>& kind_tables) {
     auto fail = [&](const std::string& why) { return Error{"stone '" + stone.name + "': " + why}; };
     std::unique_ptr<StoneScene> scene(new StoneScene());
     scene->name_ = stone.name;
@@ -83,6 +83,7 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(const CatalogueStone& stone
                                         : scene->database_ != nullptr || !chosen->needs_database;
     setup.method = drawable ? render.method : "trace";
     setup.piece = scene->piece_.get();
+    if (scene->piece_) setup.kind_tables = kind_tables;
     setup.database = scene->database_;
     setup.stone = geometry;
     setup.material = scene->database_ ? scene->database_->material() : geometry.material;

@@ -51,10 +51,11 @@ struct RenderChoice {
 
 class StoneScene {
   public:
-    // Errors name the stone, and the file or setting that failed.
-    static Result<std::unique_ptr<StoneScene>> make(const CatalogueStone& stone,
-                                                    const LookChoice& look,
-                                                    const RenderChoice& render);
+    // Errors name the stone, and the file or setting that failed. `kind_tables`: a piece's
+    // kinds drawn from tables (by kind, null: the configured method; gpu/piece_tables.hpp).
+    static Result<std::unique_ptr<StoneScene>> make(
+        const CatalogueStone& stone, const LookChoice& look, const RenderChoice& render,
+        const std::vector<std::shared_ptr<const Database>>& kind_tables = {});
 
     gpu::FrameRenderer& renderer() { return renderer_.value(); }
     // The stone's tables; a design (CatalogueStone::design) has none.

@@ -7,9 +7,12 @@
 // whose orthographic ray meets a stone, found on the CPU by each stone's own intersector; the metal
 // in front of a stone is not subtracted; and the stone pixels shaded and kept, StonePixels). A
 // piece of several stones is drawn twice: with every stone traced as configured, and with its small
-// stones' models chosen as the kiosk chooses them (gpu/stone_models.hpp), the choice printed.
+// stones' models chosen as the kiosk chooses them (gpu/stone_models.hpp), the choice printed. A
+// piece with a kind of stone whose tables are given (--tables, as the kiosk builds them for a
+// non-convex stone: gpu/piece_tables.hpp) is drawn a third time, that kind from its tables.
 //
-//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [piece.toml ...]
+//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--tables FILE.gemdb ...]
+//                [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
 //    9 frames each)
 #include <GLES3/gl3.h>
@@ -32,6 +35,8 @@
 #include "piece/piece_file.hpp"
 #include "render/piece_tracer.hpp"
 #include "scene/scene.hpp"
+#include "tables/reader.hpp"
+#include "tables/sections.hpp"
 #include "trace/intersector.hpp"
 
 #include "bench_support.hpp"
@@ -125,6 +130,7 @@ StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
 struct Subject {
     std::string file;
     bool chosen = false;  // small stones' models chosen (gpu/stone_models.hpp), else configured
+    bool tabled = false;  // a kind drawn from its tables (--tables)
     std::shared_ptr<const gem::Piece> piece;
     std::unique_ptr<gem::kiosk::StoneScene> scene;
     gem::Camera camera;
@@ -142,6 +148,7 @@ int main(int argc, char** argv) {
     bool exact_fire = false;
     int depth = 8;
     std::vector<std::string> files;
+    std::vector<std::shared_ptr<const gem::Database>> databases;
     for (int i = 1; i < argc; ++i) {
         const std::string a = argv[i];
         if (a == "--size" && i + 1 < argc) {
@@ -152,6 +159,9 @@ int main(int argc, char** argv) {
             depth = std::atoi(argv[++i]);
         } else if (a == "--exact-fire") {
             exact_fire = true;
+        } else if (a == "--tables" && i + 1 < argc) {
+            databases.push_back(
+                std::make_shared<const gem::Database>(must(gem::Database::open(argv[++i]))));
         } else if (a.rfind("--", 0) == 0) {
             fail("unknown option " + a);
         } else {
@@ -179,17 +189,33 @@ int main(int argc, char** argv) {
         const auto piece = std::make_shared<const gem::Piece>(must(gem::load_piece(file)));
         // Each piece as configured, then with its small stones' models chosen as the kiosk
         // chooses them (a loose stone or a solitaire has none to choose).
-        for (bool chosen : {false, true}) {
+        // The kinds whose tables were given.
+        std::vector<std::shared_ptr<const gem::Database>> kind_tables(piece->kinds.size());
+        bool any_tables = false;
+        for (std::size_t k = 0; k < piece->kinds.size(); ++k) {
+            for (const auto& database : databases) {
+                if (gem::same_stored_stone(database->stone(), piece->kinds[k])) {
+                    kind_tables[k] = database;
+                    any_tables = true;
+                }
+            }
+        }
+        for (int pass = 0; pass < 3; ++pass) {
+            const bool chosen = pass > 0, tabled = pass == 2;
             if (chosen && piece->stones.size() < 2) continue;
+            if (tabled && !any_tables) continue;
             Subject s;
             s.file = std::filesystem::path(file).filename().string();
             s.chosen = chosen;
+            s.tabled = tabled;
             s.piece = piece;
             gem::kiosk::CatalogueStone entry;
             entry.name = piece->name;
             entry.piece = file;
             entry.placed = piece;
-            s.scene = must(gem::kiosk::StoneScene::make(entry, look, render));
+            s.scene = must(gem::kiosk::StoneScene::make(
+                entry, look, render,
+                tabled ? kind_tables : std::vector<std::shared_ptr<const gem::Database>>{}));
             if (chosen) {
                 for (const std::string& line :
                      must(s.scene->choose_stone_models({width, height}))) {
@@ -201,6 +227,7 @@ int main(int argc, char** argv) {
         }
     }
     target.bind();
+    for (Subject& s : subjects) s.scene->renderer().prepare(s.camera, glm::dvec3(0.0), true);
     for (int f = -1; f < frames; ++f) {
         for (Subject& s : subjects) {
             glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
@@ -225,10 +252,13 @@ int main(int argc, char** argv) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
         std::printf(
             "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu\n",
-            s.file.c_str(), s.chosen ? "chosen" : "config", s.piece->stones.size(),
-            median(s.frame_ms), median(s.stone_ms), median(s.depth_ms), median(s.submit_ms),
-            median(s.metal_ms), median(s.frame_ms) / first, px.centre, px.others, px.shaded,
-            px.kept, s.piece->metal.indices.size() / 3);
+            s.file.c_str(),
+            s.tabled   ? "tables"
+            : s.chosen ? "chosen"
+                       : "config",
+            s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms), median(s.depth_ms),
+            median(s.submit_ms), median(s.metal_ms), median(s.frame_ms) / first, px.centre,
+            px.others, px.shaded, px.kept, s.piece->metal.indices.size() / 3);
     }
     return 0;
 }

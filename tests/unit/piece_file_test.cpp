@@ -9,6 +9,8 @@
 
 #include "piece/piece_file.hpp"
 #include "piece/stone_shape.hpp"
+#include "scene/stone_file.hpp"
+#include "tables/sections.hpp"
 
 namespace gem {
 namespace {
@@ -56,6 +58,32 @@ TEST(PieceFile, TheSamplesLoadAsTheirSettings) {
                          0),
               0u)
         << describe(band.value());
+}
+
+// Each kind of stone remembers its description and the width the piece sized it to, so that
+// the same stone can be made again elsewhere (its tables: gemtables build --width-mm).
+TEST(PieceFile, EachKindKnowsItsDescriptionAndWidth) {
+    auto trilogy = load_piece(kPieces / "heart-trilogy.toml");
+    ASSERT_TRUE(trilogy) << trilogy.error();
+    const Piece& p = trilogy.value();
+    ASSERT_EQ(p.kinds.size(), 2u);
+    ASSERT_EQ(p.kind_sources.size(), 2u);
+    EXPECT_EQ(p.kind_sources[0].description.filename(), "heart-ruby.toml");
+    EXPECT_EQ(p.kind_sources[0].width_mm, 0.0);
+    EXPECT_EQ(p.kind_sources[1].description.filename(), "melee-diamond.toml");
+    EXPECT_EQ(p.kind_sources[1].width_mm, 3.5);
+    EXPECT_FALSE(p.kinds[0].convex);  // the heart: its tables are worth building
+    // Made again from its source, each kind is the piece's to the last bit.
+    for (std::size_t k = 0; k < p.kinds.size(); ++k) {
+        auto made = load_stone_file(p.kind_sources[k].description);
+        ASSERT_TRUE(made) << made.error();
+        Stone stone = std::move(made).value();
+        if (p.kind_sources[k].width_mm > 0.0) {
+            stone = stone_at_width(std::move(stone), p.kind_sources[k].width_mm);
+        }
+        EXPECT_TRUE(same_stored_stone(stone, p.kinds[k])) << k;
+    }
+    EXPECT_NEAR(girdle_width(p.kinds[1]), 3.5, 1e-9);
 }
 
 TEST(PieceFile, AMissingStoneFileIsNamedWithItsKey) {

@@ -12,10 +12,13 @@
 #include <chrono>
 #include <filesystem>
 #include <fstream>
+#include <numbers>
 #include <thread>
 
 #include "app/design_tables.hpp"
+#include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"
+#include "tables/sections.hpp"
 
 namespace gem::kiosk {
 namespace {
@@ -49,7 +52,15 @@ class DesignTablesTest : public ::testing::Test {
 
     // Two frames that are not timed (shader compiles), then `n` of `ms` each.
     void frames(DesignTables& tables, bool from_tables, int n, double ms) {
-        for (int i = 0; i < 2 + n; ++i) tables.frame_drawn(stone_, from_tables, i, ms, kBudgetMs);
+        const DesignTables::KindTables drawn =
+            from_tables ? tables.tables_for(stone_) : DesignTables::KindTables{};
+        for (int i = 0; i < 2 + n; ++i) tables.frame_drawn(stone_, drawn, i, ms, kBudgetMs);
+    }
+
+    // The design's tables in use, or null.
+    std::shared_ptr<const Database> tables_of(const DesignTables& tables) const {
+        const DesignTables::KindTables kinds = tables.tables_for(stone_);
+        return kinds.empty() ? nullptr : kinds.front();
     }
 
     // Calls dispatch() as the main loop does until it reports a switch; false after 60 s.
@@ -73,7 +84,7 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
     const fs::path file = [&] {
         DesignTables tables(config_, tables_dir());
         EXPECT_FALSE(tables.dispatch(&stone_));
-        EXPECT_EQ(tables.tables_for(stone_), nullptr);
+        EXPECT_EQ(tables_of(tables), nullptr);
         // Six trace frames of 25 ms against a 10 ms budget: p90 25 ms, over.
         testing::internal::CaptureStderr();
         frames(tables, false, 6, 25.0);
@@ -82,7 +93,7 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
         EXPECT_NE(log.find("p90 25.0 ms, over the 10.0 ms budget"), std::string::npos) << log;
         EXPECT_NE(log.find("running at idle CPU priority (SCHED_IDLE), nice 19"), std::string::npos)
             << log;
-        auto database = tables.tables_for(stone_);
+        auto database = tables_of(tables);
         EXPECT_NE(database, nullptr);
         if (!database) return fs::path();
         EXPECT_EQ(database->path(), tables.tables_path(stone_));
@@ -96,7 +107,7 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
         EXPECT_NE(verdict.find("its tables pay: p90 15.0 ms against the trace's 25.0 ms"),
                   std::string::npos)
             << verdict;
-        EXPECT_NE(tables.tables_for(stone_), nullptr);
+        EXPECT_NE(tables_of(tables), nullptr);
         return database->path();
     }();
     ASSERT_TRUE(fs::exists(file));
@@ -115,7 +126,7 @@ TEST_F(DesignTablesTest, OverBudgetTablesAreBuiltAtIdlePriorityUsedAndFoundAfter
     testing::internal::CaptureStderr();
     EXPECT_TRUE(wait_for_switch(again));
     const std::string log = testing::internal::GetCapturedStderr();
-    EXPECT_NE(again.tables_for(stone_), nullptr);
+    EXPECT_NE(tables_of(again), nullptr);
     EXPECT_EQ(log.find("building"), std::string::npos) << log;
     EXPECT_EQ(fs::last_write_time(file), modified);
 }
@@ -135,10 +146,10 @@ TEST_F(DesignTablesTest, TablesWithoutAVerdictAreTimedAgainAfterARestart) {
     testing::internal::CaptureStderr();
     EXPECT_FALSE(again.dispatch(&stone_));
     EXPECT_FALSE(again.busy());  // nothing checked or built before the trace is timed
-    EXPECT_EQ(again.tables_for(stone_), nullptr);
+    EXPECT_EQ(tables_of(again), nullptr);
     frames(again, false, 6, 25.0);
     EXPECT_TRUE(wait_for_switch(again));
-    EXPECT_NE(again.tables_for(stone_), nullptr);
+    EXPECT_NE(tables_of(again), nullptr);
     frames(again, true, 6, 15.0);
     EXPECT_FALSE(again.dispatch(&stone_));
     const std::string log = testing::internal::GetCapturedStderr();
@@ -157,11 +168,11 @@ TEST_F(DesignTablesTest, SlowerTablesAreDroppedAndNotBuiltAgain) {
         DesignTables tables(config_, tables_dir());
         frames(tables, false, 6, 25.0);
         ASSERT_TRUE(wait_for_switch(tables));
-        ASSERT_NE(tables.tables_for(stone_), nullptr);
+        ASSERT_NE(tables_of(tables), nullptr);
         // Tables at 40 ms against the trace's 25 ms: back to the trace, at the next dispatch.
         frames(tables, true, 6, 40.0);
         EXPECT_TRUE(tables.dispatch(&stone_));
-        EXPECT_EQ(tables.tables_for(stone_), nullptr);
+        EXPECT_EQ(tables_of(tables), nullptr);
     }
     EXPECT_FALSE(fs::exists(DesignTables(config_, tables_dir()).tables_path(stone_)));
     // Only the verdict is left.
@@ -178,14 +189,14 @@ TEST_F(DesignTablesTest, SlowerTablesAreDroppedAndNotBuiltAgain) {
     EXPECT_FALSE(again.dispatch(&stone_));
     const std::string log = testing::internal::GetCapturedStderr();
     EXPECT_FALSE(again.busy());
-    EXPECT_EQ(again.tables_for(stone_), nullptr);
+    EXPECT_EQ(tables_of(again), nullptr);
     EXPECT_NE(log.find("did not pay on this machine"), std::string::npos) << log;
 
     // Staff who ask for tables whatever they cost get them all the same.
     config_.tables = DesignTablesMode::always;
     DesignTables asked(config_, tables_dir());
     EXPECT_TRUE(wait_for_switch(asked));
-    EXPECT_NE(asked.tables_for(stone_), nullptr);
+    EXPECT_NE(tables_of(asked), nullptr);
 }
 
 TEST_F(DesignTablesTest, ATraceWithinTheBudgetBuildsNothing) {
@@ -213,7 +224,7 @@ TEST_F(DesignTablesTest, NeverAndAlways) {
     EXPECT_TRUE(wait_for_switch(tables));
     frames(tables, true, 6, 1000.0);
     EXPECT_FALSE(tables.dispatch(&stone_));
-    EXPECT_NE(tables.tables_for(stone_), nullptr);
+    EXPECT_NE(tables_of(tables), nullptr);
 }
 
 TEST_F(DesignTablesTest, AFailingBuilderIsOneErrorLineAndTheTraceStays) {
@@ -235,7 +246,7 @@ TEST_F(DesignTablesTest, AFailingBuilderIsOneErrorLineAndTheTraceStays) {
     EXPECT_FALSE(tables.dispatch(&stone_));
     const std::string log = testing::internal::GetCapturedStderr();
     EXPECT_FALSE(tables.busy());
-    EXPECT_EQ(tables.tables_for(stone_), nullptr);
+    EXPECT_EQ(tables_of(tables), nullptr);
     const auto error = log.find("<3>");
     ASSERT_NE(error, std::string::npos) << log;
     EXPECT_EQ(log.find("<3>", error + 1), std::string::npos) << log;  // one error line
@@ -279,7 +290,70 @@ TEST_F(DesignTablesTest, DamagedTablesAreRemovedAndBuiltAgain) {
     const std::string log = testing::internal::GetCapturedStderr();
     EXPECT_NE(log.find("checksum mismatch"), std::string::npos) << log;
     EXPECT_NE(log.find("building its tables"), std::string::npos) << log;
-    EXPECT_NE(again.tables_for(stone_), nullptr);
+    EXPECT_NE(tables_of(again), nullptr);
+}
+
+// A piece's non-convex stones (the trilogy's heart side stones; its oval centre is convex) get
+// tables of their own, sized as the piece sizes them and storing every direction, so the frame
+// renderer draws them placed (gpu/piece_tables.hpp); the piece's frames judge them.
+TEST_F(DesignTablesTest, APiecesNonConvexStonesGetTablesOfTheStoneThePiecePlaces) {
+    const fs::path stones = fs::path(GEM_SOURCE_DIR) / "config" / "stones";
+    CatalogueStone trio;
+    trio.name = "Heart trio";
+    trio.piece = dir_ / "trio.toml";
+    std::ofstream(trio.piece) << "[piece]\nname = \"Heart trio\"\nsetting = \"three-stone\"\n\n"
+                                 "[centre]\nstone = \""
+                              << (stones / "oval-sapphire.toml").string()
+                              << "\"\n\n[small]\nstone = \""
+                              << (stones / "heart-ruby.toml").string() << "\"\nwidth_mm = 4.0\n";
+    auto piece = load_piece(trio.piece);
+    ASSERT_TRUE(piece) << piece.error();
+    trio.placed = std::make_shared<const Piece>(std::move(piece).value());
+    const Piece& placed = *trio.placed;
+    ASSERT_EQ(placed.kinds.size(), 2u);
+    ASSERT_TRUE(placed.kinds[0].convex);
+    ASSERT_FALSE(placed.kinds[1].convex);
+
+    const std::vector<TabledStone> tabled = tabled_stones(trio);
+    ASSERT_EQ(tabled.size(), 1u);
+    EXPECT_EQ(tabled[0].kind, 1u);
+    EXPECT_EQ(tabled[0].width_mm, 4.0);
+    EXPECT_TRUE(tabled[0].whole_sphere);
+    EXPECT_EQ(tabled[0].who, "piece 'Heart trio': its 4.0 mm stone 'heart'");
+
+    DesignTables tables(config_, tables_dir());
+    EXPECT_FALSE(tables.dispatch(&trio));
+    testing::internal::CaptureStderr();
+    for (int i = 0; i < 8; ++i) tables.frame_drawn(trio, {}, i, 25.0, kBudgetMs);
+    bool switched = false;
+    for (const auto give_up = Clock::now() + std::chrono::seconds(60);
+         !switched && Clock::now() < give_up;) {
+        switched = tables.dispatch(&trio);
+        std::this_thread::sleep_for(std::chrono::milliseconds(10));
+    }
+    const std::string log = testing::internal::GetCapturedStderr();
+    ASSERT_TRUE(switched) << log;
+    EXPECT_NE(log.find("piece 'Heart trio': its 4.0 mm stone 'heart': the trace draws it in p90 "
+                       "25.0 ms"),
+              std::string::npos)
+        << log;
+    const DesignTables::KindTables kinds = tables.tables_for(trio);
+    ASSERT_EQ(kinds.size(), 2u);
+    EXPECT_EQ(kinds[0], nullptr);  // the convex centre stays traced
+    ASSERT_NE(kinds[1], nullptr);
+    // The very stone the piece places, every direction stored.
+    EXPECT_TRUE(same_stored_stone(kinds[1]->stone(), placed.kinds[1]));
+    EXPECT_EQ(kinds[1]->params().grid.min_elevation_rad, -std::numbers::pi / 2.0);
+
+    // The piece's frames drawn with them, faster: they pay and stay.
+    testing::internal::CaptureStderr();
+    for (int i = 0; i < 8; ++i) tables.frame_drawn(trio, kinds, i, 15.0, kBudgetMs);
+    EXPECT_FALSE(tables.dispatch(&trio));
+    const std::string verdict = testing::internal::GetCapturedStderr();
+    EXPECT_NE(verdict.find("its tables pay: p90 15.0 ms against the trace's 25.0 ms"),
+              std::string::npos)
+        << verdict;
+    EXPECT_EQ(tables.tables_for(trio).size(), 2u);
 }
 
 }  // namespace

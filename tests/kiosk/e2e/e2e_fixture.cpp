@@ -172,7 +172,8 @@ Result<bool> make_context_current() {
     return true;
 }
 
-Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewState& view) {
+Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewState& view,
+                                const std::vector<std::shared_ptr<const Database>>& kind_tables) {
     auto context = make_context_current();
     if (!context) return Error{context.error()};
     auto validated = kiosk::validate_catalogue(catalogue);
@@ -189,7 +190,7 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     render.depth = config.config.render.depth;
     render.wait_for_views = true;
     render.stone_share = config.config.picture.stone_share;
-    auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render);
+    auto scene = kiosk::StoneScene::make(selection.stone(), selection.look(), render, kind_tables);
     if (!scene) return Error{scene.error()};
     // A piece's small stones get their models as the kiosk gives them when it makes a scene.
     auto models = scene.value()->choose_stone_models({kWidth, kHeight});
@@ -230,8 +231,9 @@ double psnr_srgb8(const Image& a, const Image& b) {
 }
 
 void expect_shows(const Image& shown, const fs::path& expected, const fs::path& instead,
-                  const std::string& what) {
-    auto right = reference_picture(expected, kiosk::kStartView);
+                  const std::string& what,
+                  const std::vector<std::shared_ptr<const Database>>& kind_tables) {
+    auto right = reference_picture(expected, kiosk::kStartView, kind_tables);
     ASSERT_TRUE(right.ok()) << right.error();
     auto wrong = reference_picture(instead, kiosk::kStartView);
     ASSERT_TRUE(wrong.ok()) << wrong.error();

@@ -6,6 +6,7 @@
 // no main loop) to compare the kiosk's snapshots with.
 
 #include <filesystem>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -13,6 +14,7 @@
 
 #include "gestures/gesture_output.hpp"
 #include "render/image.hpp"
+#include "tables/reader.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk_e2e {
@@ -57,8 +59,11 @@ RawTouch one_finger_path(const std::filesystem::path& recording,
 glm::dvec2 two_finger_distances(const std::filesystem::path& recording);
 
 // The catalogue's stone at `view`, as the kiosk configured by write_config draws it, linear RGB.
-Result<Image> reference_picture(const std::filesystem::path& catalogue,
-                                const kiosk::ViewState& view);
+// `kind_tables`: its piece's kinds drawn from these tables (null: traced), as the kiosk draws
+// them once it has built them.
+Result<Image> reference_picture(
+    const std::filesystem::path& catalogue, const kiosk::ViewState& view,
+    const std::vector<std::shared_ptr<const Database>>& kind_tables = {});
 
 // The one EGL context of this test process (contexts share Mesa's display: destroying one
 // would tear down the others).
@@ -71,6 +76,7 @@ double psnr_srgb8(const Image& a, const Image& b);
 // renderer drew it) and clearly not `instead`'s (at least 5 dB further off); prints both, after
 // `what`.
 void expect_shows(const Image& shown, const std::filesystem::path& expected,
-                  const std::filesystem::path& instead, const std::string& what);
+                  const std::filesystem::path& instead, const std::string& what,
+                  const std::vector<std::shared_ptr<const Database>>& kind_tables = {});
 
 }  // namespace gem::kiosk_e2e
