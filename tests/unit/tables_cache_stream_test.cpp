@@ -29,6 +29,17 @@ glm::dvec3 from_angles(double azimuth, double elevation) {
             std::cos(elevation) * std::cos(azimuth)};
 }
 
+// Every level-0 decode in `order` (view, level) comes before every level-1 decode.
+bool coarse_first(const std::vector<std::pair<std::uint32_t, std::uint32_t>>& order) {
+    std::size_t last_coarse = 0;
+    std::size_t first_fine = order.size();
+    for (std::size_t i = 0; i < order.size(); ++i) {
+        if (order[i].second == 0) last_coarse = i;
+        if (order[i].second == 1) first_fine = std::min(first_fine, i);
+    }
+    return last_coarse < first_fine;
+}
+
 TEST(TablesCacheStream, ColdAcquireReturnsNothingAtOnce) {
     auto source = std::make_shared<FakeSource>(0.3, 2, 100);
     source->shut_gate();
@@ -130,14 +141,7 @@ TEST(TablesCacheStream, PrefetchDecodesTheViewsAheadCoarseFirst) {
         EXPECT_GT(azimuth, 0.0) << view;
         EXPECT_LT(azimuth, 0.6 + 0.3) << view;
     }
-    // Coarse first: every level-0 decode comes before every level-1 decode.
-    std::size_t last_coarse = 0;
-    std::size_t first_fine = order.size();
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        if (order[i].second == 0) last_coarse = i;
-        if (order[i].second == 1) first_fine = std::min(first_fine, i);
-    }
-    EXPECT_LT(last_coarse, first_fine);
+    EXPECT_TRUE(coarse_first(order));
     // Nearest in time first: the first decode is the first view met along the arc.
     std::uint32_t first_met = grid.nearest(here).view;
     for (int i = 1; i <= 600 && first_met == grid.nearest(here).view; ++i) {
@@ -167,13 +171,7 @@ TEST(TablesCacheStream, PrefetchForSeveralStonesDecodesWhatLiesAheadOfEach) {
         EXPECT_TRUE(cache.resident(ahead, 1)) << start;
         EXPECT_FALSE(cache.resident(behind, 0)) << start;
     }
-    std::size_t last_coarse = 0;
-    std::size_t first_fine = order.size();
-    for (std::size_t i = 0; i < order.size(); ++i) {
-        if (order[i].second == 0) last_coarse = i;
-        if (order[i].second == 1) first_fine = std::min(first_fine, i);
-    }
-    EXPECT_LT(last_coarse, first_fine);
+    EXPECT_TRUE(coarse_first(order));
 }
 
 TEST(TablesCacheStream, DemandOutranksPrefetch) {
