@@ -20,9 +20,14 @@ class PieceTables final : public StoneMethod {
           tables_(std::move(tables)),
           stones_of_kind_(std::move(stones_of_kind)),
           placements_(std::move(placements)) {
-        // Sized once, so that a frame allocates nothing.
-        rest_frames_.reserve(placements_.size());
-        rest_kinds_.reserve(placements_.size());
+        // Sized once, and then assigned element by element (a frame's lights keep their
+        // storage), so that a frame allocates nothing.
+        std::size_t traced = 0;
+        for (std::size_t k = 0; k < tables_.size(); ++k) {
+            if (!tables_[k]) traced += stones_of_kind_[k].size();
+        }
+        rest_frames_.resize(traced);
+        rest_kinds_.resize(traced);
         headings_.reserve(placements_.size());
     }
 
@@ -101,12 +106,12 @@ class PieceTables final : public StoneMethod {
 
   private:
     void select_rest(const std::vector<StoneFrame>& frames, const std::vector<std::size_t>& kinds) {
-        rest_frames_.clear();
-        rest_kinds_.clear();
+        std::size_t j = 0;
         for (std::size_t i = 0; i < frames.size(); ++i) {
             if (tables_[kinds[i]]) continue;
-            rest_frames_.push_back(frames[i]);
-            rest_kinds_.push_back(kinds[i]);
+            rest_frames_[j] = frames[i];
+            rest_kinds_[j] = kinds[i];
+            ++j;
         }
     }
 

@@ -79,7 +79,7 @@ std::string DesignTables::key_of(const TabledStone& stone) const {
     bytes.f64(config_.spacing_deg);
     bytes.u32(static_cast<std::uint32_t>(config_.depth));
     bytes.f64(config_.threshold);
-    // A piece's stone stores every direction; a design's the band above −10°, as before.
+    // A piece's stone stores every direction; a design's, the elevations from −10° up.
     if (stone.whole_sphere) bytes.u8(1);
     char key[24];
     std::snprintf(key, sizeof key, "%016llx",
