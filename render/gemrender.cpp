@@ -216,9 +216,11 @@ int main(int argc, char** argv) {
     const gem::Scene& s = final_scene.value();
     std::optional<gem::Piece> piece;
     if (!o.piece.empty()) {
-        gem::Result<gem::Piece> loaded = gem::load_piece(o.piece);
+        std::vector<std::string> lines;
+        gem::Result<gem::Piece> loaded = gem::load_piece(o.piece, &lines);
         if (!loaded) return fail(loaded.error());
         piece = std::move(loaded).value();
+        for (const std::string& line : lines) std::printf("gemrender: %s\n", line.c_str());
         std::printf("gemrender: %s\n", gem::describe(*piece).c_str());
         o.gpu.piece = &*piece;
     }

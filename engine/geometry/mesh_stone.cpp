@@ -14,11 +14,6 @@
 namespace gem {
 namespace {
 
-// Coplanarity and convexity are judged relative to the mesh size. Files written in float32
-// (binary STL, most exporters) carry ~6e-8 relative rounding, while neighbouring facets of a
-// real cut differ by at least a fraction of a degree, so 1e-6 separates the two safely.
-constexpr double kPlanarRelative = 1e-6;
-
 using Tri = std::array<std::uint32_t, 3>;
 
 std::uint64_t edge_key(std::uint32_t a, std::uint32_t b) {
@@ -142,7 +137,8 @@ Plane fit_plane(const std::vector<glm::dvec3>& v, const std::vector<Tri>& tris,
 
 Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                   std::string name, double weld_tolerance) {
+                                   std::string name, double weld_tolerance,
+                                   double planar_tolerance) {
     if (triangles.empty()) return Error{"mesh has no triangles"};
     for (std::size_t t = 0; t < triangles.size(); ++t) {
         for (std::uint32_t i : triangles[t]) {
@@ -230,7 +226,7 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
     }
 
     // Merge neighbours whose planes agree: the far vertex of each lies on the other's plane.
-    const double planar_tol = kPlanarRelative * size;
+    const double planar_tol = planar_tolerance * size;
     UnionFind groups(tris.size());
     for (std::uint32_t t = 0; t < tris.size(); ++t) {
         const glm::dvec3 n = glm::normalize(area_vector(v, tris[t]));

@@ -25,9 +25,15 @@ Result<Stone> stone_from_planes(const std::vector<FacetPlane>& planes, std::stri
 // Builds a stone from a closed, consistently wound triangle mesh (outward = counter-clockwise).
 // Welds vertices closer than `weld_tolerance` (relative to the mesh size), merges coplanar
 // neighbouring triangles into facets, detects convexity. Open or non-manifold meshes are errors.
+// Coplanarity and convexity are judged within `planar_tolerance` of the mesh size. Files written
+// in float32 near their origin (binary STL, most exporters) carry ~6e-8 relative rounding, while
+// neighbouring facets of a real cut differ by at least a fraction of a degree, so the default
+// 1e-6 separates the two safely; a stone far from its file's origin needs more (gltf_piece.cpp).
+inline constexpr double kPlanarRelative = 1e-6;
 Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
-                                   std::string name, double weld_tolerance = 1e-9);
+                                   std::string name, double weld_tolerance = 1e-9,
+                                   double planar_tolerance = kPlanarRelative);
 
 // Triangulates every facet loop (ear clipping, so non-convex facets work) into stone.triangles.
 void triangulate_facets(Stone& stone);

@@ -1,6 +1,7 @@
 #include "piece/piece_file.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <cmath>
 #include <map>
 #include <optional>
@@ -8,6 +9,7 @@
 #include <vector>
 
 #include "import/import_text.hpp"
+#include "piece/gltf_piece.hpp"
 #include "piece/metal_obj.hpp"
 #include "piece/piece_check.hpp"
 #include "piece/settings.hpp"
@@ -289,7 +291,10 @@ Result<Piece> parse_piece(std::string_view text, const std::string& name,
     return PieceReader(name, base).read(doc);
 }
 
-Result<Piece> load_piece(const std::filesystem::path& path) {
+Result<Piece> load_piece(const std::filesystem::path& path, std::vector<std::string>* log) {
+    std::string extension = path.extension().string();
+    for (char& c : extension) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+    if (extension == ".glb" || extension == ".gltf") return load_gltf_piece(path, log);
     Result<std::string> text = import::read_whole_file(path);
     if (!text) return Error{text.error()};
     return parse_piece(text.value(), path.string(), path.parent_path());

@@ -9,13 +9,17 @@
 #include <filesystem>
 #include <string>
 #include <string_view>
+#include <vector>
 
 #include "piece/piece.hpp"
 #include "util/result.hpp"
 
 namespace gem {
 
-Result<Piece> load_piece(const std::filesystem::path& path);
+// A .glb or .gltf file is read as glTF (gltf_piece.hpp), whose lines (how each stone was
+// recognised) go to `log` if given; any other file as a TOML piece description.
+Result<Piece> load_piece(const std::filesystem::path& path,
+                         std::vector<std::string>* log = nullptr);
 // The same from text; `name` stands for the file in messages, `base` resolves relative paths.
 Result<Piece> parse_piece(std::string_view text, const std::string& name,
                           const std::filesystem::path& base);

@@ -1,7 +1,9 @@
 // Writes the fuzz seed corpus: a tiny valid database (an octahedron traced for real at 2 and
 // 4 pixels a side over a coarse grid), the same with dispersion, and damaged copies of it —
 // a flipped byte in the header, a section and a payload, truncations, a stripped magic — so
-// the fuzzer starts from inputs that reach every stage of the reader.
+// the fuzzer starts from inputs that reach every stage of the reader. Given a second folder, it
+// writes the glTF reader's seeds there: the octahedron as a named stone on a metal plate (a
+// piece the reader accepts), with a transmissive material and without, and damaged copies.
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -11,6 +13,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/glb_writer.hpp"
 #include "optics/material.hpp"
 #include "tables/writer.hpp"
 #include "trace/tracer.hpp"
@@ -97,13 +100,52 @@ void write(const std::filesystem::path& path, const Bytes& bytes) {
     out.write(bytes.data(), static_cast<std::streamsize>(bytes.size()));
 }
 
+// The octahedron, in metres, standing on its lower corner 0.05 mm above a plate of metal.
+gem::test_support::Glb octahedron_piece(bool transmissive) {
+    const gem::Stone s = octahedron();
+    gem::test_support::Glb glb;
+    std::vector<glm::dvec3> corners;
+    for (const glm::dvec3& v : s.vertices) corners.push_back((v + glm::dvec3(0, 1.5, 0)) / 1000.0);
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+    for (const gem::MeshTriangle& t : s.triangles) triangles.push_back(t.v);
+    int material = -1;
+    if (transmissive) {
+        material = glb.material({{"name", "Gem"},
+                                 {"extensions",
+                                  {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                   {"KHR_materials_ior", {{"ior", 2.42}}}}}});
+    }
+    glb.node({{"name", "Diamond_1"}, {"mesh", glb.mesh("stone", corners, triangles, material)}});
+    const double t = -0.05e-3, b = -1.05e-3, w = 3e-3;
+    std::vector<glm::dvec3> p;
+    for (int i = 0; i < 8; ++i) p.push_back({i & 1 ? w : -w, i & 2 ? t : b, i & 4 ? w : -w});
+    const std::vector<std::array<std::uint32_t, 3>> faces = {
+        {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+        {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+    glb.node({{"name", "Shank"}, {"mesh", glb.mesh("shank", p, faces, -1)}});
+    return glb;
+}
+
+void write_gltf_seeds(const std::filesystem::path& dir) {
+    std::filesystem::create_directories(dir);
+    octahedron_piece(true).write(dir / "valid.glb");
+    octahedron_piece(false).write(dir / "by_name.glb");
+    const Bytes valid = read(dir / "valid.glb");
+    write(dir / "truncated_half.glb", Bytes(valid.begin(), valid.begin() + valid.size() / 2));
+    Bytes flipped = valid;
+    flipped[valid.size() - 5] = static_cast<char>(flipped[valid.size() - 5] ^ 0x5A);
+    write(dir / "buffer_flip.glb", flipped);
+    std::printf("gem_fuzz_seeds: wrote 4 glTF seeds to %s\n", dir.c_str());
+}
+
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2) {
-        std::fprintf(stderr, "usage: gem_fuzz_seeds DIR\n");
+    if (argc != 2 && argc != 3) {
+        std::fprintf(stderr, "usage: gem_fuzz_seeds DIR [GLTF_DIR]\n");
         return 2;
     }
+    if (argc == 3) write_gltf_seeds(argv[2]);
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
     if (!write_valid(dir / "valid.gemdb", false)) return 1;

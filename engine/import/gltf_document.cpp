@@ -1,0 +1,371 @@
+// The glTF library is Debian's tinygltf 2.7 (libtinygltf-dev): the one packaged reader of glTF
+// 2.0 that handles .glb and .gltf with external buffers and keeps every extension as a value
+// (cgltf and fastgltf read the gem extensions typed, but Debian 12 packages neither). Its
+// implementation is compiled into this file rather than linked from Debian's libtinygltf2d, so
+// that images are never decoded (a piece shades by its material factors; textures are counted
+// and ignored) and so that its Draco decoder can be enabled here when Draco is read.
+#define TINYGLTF_IMPLEMENTATION
+#define TINYGLTF_NO_STB_IMAGE
+#define TINYGLTF_NO_STB_IMAGE_WRITE
+#define TINYGLTF_NO_EXTERNAL_IMAGE
+#include <tiny_gltf.h>
+
+#include "import/gltf_document.hpp"
+
+#include <algorithm>
+#include <cstring>
+#include <set>
+
+#include <glm/gtc/quaternion.hpp>
+#include <nlohmann/json.hpp>
+
+#include "import/import_text.hpp"
+
+namespace gem::import {
+
+namespace {
+
+// Extensions a file may require that this reader honours: the gem materials (read), the
+// quantised positions (decoded below), and ones whose absence changes only textures or
+// highlights (ignored).
+const std::set<std::string> kReadable = {"KHR_materials_ior",
+                                         "KHR_materials_transmission",
+                                         "KHR_materials_volume",
+                                         "KHR_materials_dispersion",
+                                         "KHR_mesh_quantization",
+                                         "KHR_materials_specular",
+                                         "KHR_materials_emissive_strength",
+                                         "KHR_texture_transform"};
+
+// The JSON of a .glb (its first chunk) or of a .gltf, for a look at what the file requires
+// before the library reads it: a file compressed with meshopt fails inside the library with a
+// message about byte lengths, not about the extension it lacks.
+Result<std::string_view> json_of(std::string_view bytes) {
+    if (bytes.size() < 4 || bytes.substr(0, 4) != "glTF") return bytes;
+    if (bytes.size() < 20) return Error{"a .glb shorter than its header (truncated)"};
+    std::uint32_t header[5];
+    std::memcpy(header, bytes.data(), sizeof header);
+    const std::uint32_t json_length = header[3];
+    if (header[1] != 2) return Error{"a .glb of version " + std::to_string(header[1]) + ", not 2"};
+    if (header[4] != 0x4E4F534Au) return Error{"a .glb whose first chunk is not its JSON"};
+    if (json_length > bytes.size() - 20)
+        return Error{"a .glb cut short inside its JSON (truncated)"};
+    return bytes.substr(20, json_length);
+}
+
+Result<bool> check_required(std::string_view json) {
+    const nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+    if (doc.is_discarded() || !doc.is_object()) return Error{"not glTF: its JSON does not parse"};
+    const auto required = doc.find("extensionsRequired");
+    if (required == doc.end()) return true;
+    if (!required->is_array()) return Error{"extensionsRequired is not a list"};
+    for (const nlohmann::json& name : *required) {
+        if (!name.is_string()) return Error{"extensionsRequired holds a non-string"};
+        const std::string n = name.get<std::string>();
+        if (kReadable.contains(n)) continue;
+        if (n == "KHR_draco_mesh_compression" || n == "EXT_meshopt_compression") {
+            return Error{"its meshes are compressed with " + n +
+                         ", which this reader does not decode; export the piece uncompressed"};
+        }
+        return Error{"it requires the extension " + n + ", which this reader does not know"};
+    }
+    return true;
+}
+
+// Images are not decoded: they are counted, and a piece is shaded by its material factors.
+bool skip_image(tinygltf::Image*, const int, std::string*, std::string*, int, int,
+                const unsigned char*, int, void* counter) {
+    ++*static_cast<std::size_t*>(counter);
+    return true;
+}
+
+double number(const tinygltf::Value& object, const char* key, double fallback) {
+    if (!object.IsObject() || !object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    return v.IsNumber() ? v.GetNumberAsDouble() : fallback;
+}
+
+glm::dvec3 colour(const tinygltf::Value& object, const char* key, glm::dvec3 fallback) {
+    if (!object.IsObject() || !object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    if (!v.IsArray() || v.ArrayLen() < 3) return fallback;
+    glm::dvec3 c;
+    for (int i = 0; i < 3; ++i) {
+        if (!v.Get(i).IsNumber()) return fallback;
+        c[i] = v.Get(i).GetNumberAsDouble();
+    }
+    return c;
+}
+
+GltfMaterial material_of(const tinygltf::Material& m) {
+    GltfMaterial out;
+    out.name = m.name;
+    const auto& pbr = m.pbrMetallicRoughness;
+    if (pbr.baseColorFactor.size() >= 3) {
+        out.base_colour = {pbr.baseColorFactor[0], pbr.baseColorFactor[1], pbr.baseColorFactor[2]};
+    }
+    out.metallic = pbr.metallicFactor;
+    out.roughness = pbr.roughnessFactor;
+    for (const auto& [name, value] : m.extensions) {
+        out.extensions.push_back(name);
+        // Defaults as each extension's specification gives them.
+        if (name == "KHR_materials_transmission") {
+            out.transmission = number(value, "transmissionFactor", 0.0);
+        } else if (name == "KHR_materials_ior") {
+            out.ior = number(value, "ior", 1.5);
+        } else if (name == "KHR_materials_dispersion") {
+            out.dispersion = number(value, "dispersion", 0.0);
+        } else if (name == "KHR_materials_volume") {
+            out.attenuation_colour = colour(value, "attenuationColor", glm::dvec3(1.0));
+            out.attenuation_distance_m =
+                number(value, "attenuationDistance", std::numeric_limits<double>::infinity());
+        }
+    }
+    return out;
+}
+
+// An accessor's elements as doubles, `components` each; integers are decoded as the glTF
+// specification says for normalised ones (KHR_mesh_quantization), as they are otherwise.
+Result<std::vector<double>> read_accessor(const tinygltf::Model& model, int index, int components,
+                                          const std::string& what) {
+    if (index < 0 || index >= static_cast<int>(model.accessors.size())) {
+        return Error{what + ": accessor " + std::to_string(index) + " does not exist"};
+    }
+    const tinygltf::Accessor& a = model.accessors[index];
+    if (a.sparse.isSparse) return Error{what + ": sparse accessors are not read"};
+    if (tinygltf::GetNumComponentsInType(static_cast<std::uint32_t>(a.type)) != components) {
+        return Error{what + ": accessor " + std::to_string(index) + " has the wrong shape"};
+    }
+    const int size = tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(a.componentType));
+    if (size <= 0) return Error{what + ": accessor " + std::to_string(index) + " has no type"};
+    if (a.bufferView < 0 || a.bufferView >= static_cast<int>(model.bufferViews.size())) {
+        return Error{what + ": accessor " + std::to_string(index) + " has no buffer view"};
+    }
+    const tinygltf::BufferView& view = model.bufferViews[a.bufferView];
+    if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size())) {
+        return Error{what + ": buffer view " + std::to_string(a.bufferView) + " has no buffer"};
+    }
+    const std::vector<unsigned char>& data = model.buffers[view.buffer].data;
+    const int stride = a.ByteStride(view);
+    const std::size_t element = static_cast<std::size_t>(components) * size;
+    const std::size_t view_end = view.byteOffset + view.byteLength;
+    const std::size_t start = view.byteOffset + a.byteOffset;
+    const auto outside = [&] {
+        return Error{what + ": accessor " + std::to_string(index) + " reaches outside its buffer"};
+    };
+    if (stride <= 0 || view_end > data.size() || view_end < view.byteOffset) return outside();
+    if (a.count > 0) {
+        if (start > view_end ||
+            a.count - 1 > (view_end - start) / static_cast<std::size_t>(stride)) {
+            return outside();
+        }
+        if (start + (a.count - 1) * stride + element > view_end) return outside();
+    }
+    std::vector<double> out(a.count * components);
+    for (std::size_t i = 0; i < a.count; ++i) {
+        const unsigned char* p = data.data() + start + i * stride;
+        for (int c = 0; c < components; ++c, p += size) {
+            double v = 0.0;
+            switch (a.componentType) {
+                case TINYGLTF_COMPONENT_TYPE_FLOAT: {
+                    float f;
+                    std::memcpy(&f, p, 4);
+                    v = f;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_BYTE: {
+                    std::int8_t x;
+                    std::memcpy(&x, p, 1);
+                    v = a.normalized ? std::max(x / 127.0, -1.0) : x;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_BYTE:
+                    v = a.normalized ? *p / 255.0 : *p;
+                    break;
+                case TINYGLTF_COMPONENT_TYPE_SHORT: {
+                    std::int16_t x;
+                    std::memcpy(&x, p, 2);
+                    v = a.normalized ? std::max(x / 32767.0, -1.0) : x;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_SHORT: {
+                    std::uint16_t x;
+                    std::memcpy(&x, p, 2);
+                    v = a.normalized ? x / 65535.0 : x;
+                    break;
+                }
+                case TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT: {
+                    std::uint32_t x;
+                    std::memcpy(&x, p, 4);
+                    v = x;
+                    break;
+                }
+                default:
+                    return Error{what + ": accessor " + std::to_string(index) +
+                                 " has a component type this reader does not read"};
+            }
+            out[i * components + c] = v;
+        }
+    }
+    return out;
+}
+
+glm::dmat4 local_transform(const tinygltf::Node& node) {
+    if (node.matrix.size() == 16) {
+        glm::dmat4 m;
+        for (int i = 0; i < 16; ++i) m[i / 4][i % 4] = node.matrix[i];  // column-major
+        return m;
+    }
+    glm::dmat4 m(1.0);
+    if (node.translation.size() == 3) {
+        m[3] = glm::dvec4(node.translation[0], node.translation[1], node.translation[2], 1.0);
+    }
+    if (node.rotation.size() == 4) {
+        const glm::dquat q(node.rotation[3], node.rotation[0], node.rotation[1], node.rotation[2]);
+        m = m * glm::dmat4(glm::mat3_cast(glm::normalize(q)));
+    }
+    if (node.scale.size() == 3) {
+        m = m *
+            glm::dmat4(glm::dmat3(glm::dvec3(node.scale[0], 0, 0), glm::dvec3(0, node.scale[1], 0),
+                                  glm::dvec3(0, 0, node.scale[2])));
+    }
+    return m;
+}
+
+std::string node_name(const tinygltf::Model& model, int index) {
+    const std::string& name = model.nodes[index].name;
+    return "node " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
+}
+
+Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
+                         const glm::dmat4& to_scene) {
+    const tinygltf::Mesh& mesh = model.meshes[model.nodes[node].mesh];
+    const tinygltf::Primitive& p = mesh.primitives[primitive];
+    const std::string what = node_name(model, node) + ", mesh '" + mesh.name + "' primitive " +
+                             std::to_string(primitive);
+    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
+        return Error{what + ": not triangles (mode " + std::to_string(p.mode) + ")"};
+    }
+    const auto position = p.attributes.find("POSITION");
+    if (position == p.attributes.end()) return Error{what + ": no POSITION"};
+    auto xyz = read_accessor(model, position->second, 3, what + " positions");
+    if (!xyz) return Error{xyz.error()};
+    GltfPart part;
+    part.node = model.nodes[node].name;
+    part.mesh = mesh.name;
+    part.mesh_index = model.nodes[node].mesh;
+    part.primitive = primitive;
+    part.material = p.material;
+    part.to_scene = to_scene;
+    const std::vector<double>& v = xyz.value();
+    part.positions.resize(v.size() / 3);
+    for (std::size_t i = 0; i < part.positions.size(); ++i) {
+        part.positions[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+    }
+    std::vector<double> indices;
+    if (p.indices >= 0) {
+        auto read = read_accessor(model, p.indices, 1, what + " indices");
+        if (!read) return Error{read.error()};
+        indices = std::move(read).value();
+    } else {
+        for (std::size_t i = 0; i < part.positions.size(); ++i) indices.push_back(double(i));
+    }
+    if (indices.size() % 3 != 0) return Error{what + ": an index count not a multiple of 3"};
+    part.triangles.resize(indices.size() / 3);
+    for (std::size_t t = 0; t < part.triangles.size(); ++t) {
+        for (int c = 0; c < 3; ++c) {
+            const double i = indices[3 * t + c];
+            if (!(i >= 0.0 && i < static_cast<double>(part.positions.size()))) {
+                return Error{what + ": an index past its positions"};
+            }
+            part.triangles[t][c] = static_cast<std::uint32_t>(i);
+        }
+    }
+    if (p.material >= static_cast<int>(model.materials.size())) {
+        return Error{what + ": material " + std::to_string(p.material) + " does not exist"};
+    }
+    return part;
+}
+
+}  // namespace
+
+Result<GltfDocument> read_gltf(const std::filesystem::path& path) {
+    Result<std::string> bytes = read_whole_file(path);
+    if (!bytes) return Error{bytes.error()};
+    return parse_gltf(bytes.value(), path.string(), path.parent_path());
+}
+
+Result<GltfDocument> parse_gltf(std::string_view data, const std::string& name,
+                                const std::filesystem::path& base_dir) {
+    const auto fail = [&](const std::string& why) { return Error{name + ": " + why}; };
+    if (data.size() > std::numeric_limits<unsigned int>::max()) return fail("larger than 4 GB");
+    auto json = json_of(data);
+    if (!json) return fail(json.error());
+    if (auto required = check_required(json.value()); !required) return fail(required.error());
+
+    GltfDocument doc;
+    tinygltf::TinyGLTF loader;
+    loader.SetImageLoader(skip_image, &doc.images_ignored);
+    tinygltf::Model model;
+    std::string error, warning;
+    const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
+    const std::string base = base_dir.string();
+    const bool ok =
+        binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
+                                             reinterpret_cast<const unsigned char*>(data.data()),
+                                             static_cast<unsigned int>(data.size()), base)
+               : loader.LoadASCIIFromString(&model, &error, &warning, data.data(),
+                                            static_cast<unsigned int>(data.size()), base);
+    if (!ok) {
+        while (!error.empty() && (error.back() == '\n' || error.back() == ' ')) error.pop_back();
+        return fail("not read as glTF: " +
+                    (error.empty() ? std::string("no reason given") : error));
+    }
+    for (const tinygltf::Material& m : model.materials) doc.materials.push_back(material_of(m));
+
+    // The scene's node trees, each node's transform composed from its root; a node met again
+    // on its own path is a cycle, and a node met twice has two parents: both are refused.
+    const int scene = model.defaultScene >= 0 ? model.defaultScene : 0;
+    if (model.scenes.empty() || scene >= static_cast<int>(model.scenes.size())) {
+        return fail("no scene to show");
+    }
+    std::vector<int> visits(model.nodes.size(), 0);
+    struct Step {
+        int node;
+        glm::dmat4 parent;
+    };
+    std::vector<Step> stack;
+    // In the file's order: roots and children pushed last first.
+    const std::vector<int>& roots = model.scenes[scene].nodes;
+    for (auto r = roots.rbegin(); r != roots.rend(); ++r) stack.push_back({*r, glm::dmat4(1.0)});
+    while (!stack.empty()) {
+        const Step step = stack.back();
+        stack.pop_back();
+        if (step.node < 0 || step.node >= static_cast<int>(model.nodes.size())) {
+            return fail("node " + std::to_string(step.node) + " does not exist");
+        }
+        if (++visits[step.node] > 1) {
+            return fail(node_name(model, step.node) +
+                        " is reached twice (a cycle, or two parents) in the node tree");
+        }
+        const tinygltf::Node& node = model.nodes[step.node];
+        const glm::dmat4 to_scene = step.parent * local_transform(node);
+        if (node.mesh >= static_cast<int>(model.meshes.size())) {
+            return fail(node_name(model, step.node) + ": its mesh does not exist");
+        }
+        if (node.mesh >= 0) {
+            const tinygltf::Mesh& mesh = model.meshes[node.mesh];
+            for (int p = 0; p < static_cast<int>(mesh.primitives.size()); ++p) {
+                auto part = part_of(model, step.node, p, to_scene);
+                if (!part) return fail(part.error());
+                doc.parts.push_back(std::move(part).value());
+            }
+        }
+        for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) {
+            stack.push_back({*c, to_scene});
+        }
+    }
+    return doc;
+}
+
+}  // namespace gem::import

@@ -1,0 +1,65 @@
+#pragma once
+// A glTF 2.0 file (.glb, or .gltf with its buffers) read into plain parts: every mesh primitive
+// placed in the scene (its triangles in the mesh's own frame and the node's transform to the
+// scene, glTF's metres, +y up) and the materials it names, with the Khronos gem extensions
+// (KHR_materials_ior, _transmission, _volume, _dispersion) read. The one file that uses the
+// glTF library (Debian's tinygltf 2.7, compiled in: gltf_document.cpp says why); what a piece
+// makes of the parts is piece/gltf_piece.hpp.
+//
+// Refused with one message naming the file and the fault: a file that is not glTF, a truncated
+// .glb, an accessor reaching outside its buffer, a primitive that is not triangles, a node tree
+// with a cycle, an extension the file requires that is not read here (Draco, meshopt).
+
+#include <array>
+#include <cstdint>
+#include <filesystem>
+#include <limits>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include <glm/glm.hpp>
+
+#include "util/result.hpp"
+
+namespace gem::import {
+
+struct GltfMaterial {
+    std::string name;
+    glm::dvec3 base_colour{1.0};  // linear, the metallic-roughness model's base colour factor
+    double metallic = 1.0;
+    double roughness = 1.0;
+    double transmission = 0.0;           // KHR_materials_transmission
+    std::optional<double> ior;           // KHR_materials_ior (n at the D line)
+    std::optional<double> dispersion;    // KHR_materials_dispersion: 20 / Abbe number
+    glm::dvec3 attenuation_colour{1.0};  // KHR_materials_volume
+    double attenuation_distance_m = std::numeric_limits<double>::infinity();
+    std::vector<std::string> extensions;  // every extension the material carries
+};
+
+// One primitive of one mesh, as one node places it.
+struct GltfPart {
+    std::string node;  // names, for recognising stones and for messages
+    std::string mesh;
+    int mesh_index = 0;
+    int primitive = 0;
+    int material = -1;                  // into GltfDocument::materials; -1: the default material
+    glm::dmat4 to_scene{1.0};           // the node's transform, metres
+    std::vector<glm::dvec3> positions;  // the mesh's own frame
+    std::vector<std::array<std::uint32_t, 3>> triangles;
+};
+
+struct GltfDocument {
+    std::vector<GltfMaterial> materials;
+    std::vector<GltfPart> parts;
+    std::size_t images_ignored = 0;  // textures are not read (pieces shade by material factors)
+};
+
+Result<GltfDocument> read_gltf(const std::filesystem::path& path);
+// The same from the file's bytes: `name` stands for the file in messages, `base` is where a
+// .gltf's buffers are looked for.
+Result<GltfDocument> parse_gltf(std::string_view bytes, const std::string& name,
+                                const std::filesystem::path& base);
+
+}  // namespace gem::import

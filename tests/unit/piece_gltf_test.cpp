@@ -1,0 +1,288 @@
+// Pieces read from glTF 2.0 files made here as CAD exports make them: written byte by byte
+// from JSON (nlohmann) and a binary chunk, without the library the reader uses, and checked
+// against the stones they were made from (their corners, facet counts and placements), so the
+// reader's units, transforms, instancing, mirroring, merged meshes, materials and the ways a
+// stone is recognised are each tested; and a damaged or unsupported file gives one message.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <filesystem>
+#include <fstream>
+#include <numbers>
+#include <string>
+#include <vector>
+
+#include "../support/glb_writer.hpp"
+#include "geometry/cuts.hpp"
+#include "piece/gltf_piece.hpp"
+#include "piece/piece_file.hpp"
+
+namespace gem {
+namespace {
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+using test_support::Glb;
+
+Stone brilliant(double width_mm) {
+    CutParams p = default_cut_params(CutShape::round_brilliant);
+    p.width_mm = width_mm;
+    return make_cut(p, find_material("diamond").value()).value();
+}
+
+// A stone's corners and triangles, in metres.
+std::vector<glm::dvec3> metres(const Stone& s, glm::dvec3 offset_mm = glm::dvec3(0.0)) {
+    std::vector<glm::dvec3> out;
+    for (const glm::dvec3& v : s.vertices) out.push_back((v + offset_mm) / 1000.0);
+    return out;
+}
+std::vector<std::array<std::uint32_t, 3>> triangles(const Stone& s) {
+    std::vector<std::array<std::uint32_t, 3>> out;
+    for (const MeshTriangle& t : s.triangles) out.push_back(t.v);
+    return out;
+}
+
+// A plate of metal under the stones: its top 0.05 mm below `top_mm`, as a seat holds a culet.
+void add_plate(Glb& glb, double top_mm, int material) {
+    const double t = (top_mm - 0.05) / 1000.0, b = t - 0.001, w = 0.05;
+    std::vector<glm::dvec3> p;
+    for (int i = 0; i < 8; ++i) p.push_back({i & 1 ? w : -w, i & 2 ? t : b, i & 4 ? w : -w});
+    const std::vector<std::array<std::uint32_t, 3>> faces = {
+        {0, 4, 6}, {0, 6, 2}, {1, 3, 7}, {1, 7, 5}, {0, 1, 5}, {0, 5, 4},
+        {2, 6, 7}, {2, 7, 3}, {0, 2, 3}, {0, 3, 1}, {4, 5, 7}, {4, 7, 6}};
+    glb.node({{"name", "Shank"}, {"mesh", glb.mesh("shank", p, faces, material)}});
+}
+
+double culet_y(const Stone& s) {
+    double y = HUGE_VAL;
+    for (const glm::dvec3& v : s.vertices) y = std::min(y, v.y);
+    return y;
+}
+
+fs::path artifact(const std::string& name) {
+    const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "gltf";
+    fs::create_directories(dir);
+    return dir / name;
+}
+
+// The farthest a placed kind's corner lies from the nearest of `expected` (mm).
+double corner_error(const Piece& piece, std::size_t stone,
+                    const std::vector<glm::dvec3>& expected) {
+    double worst = 0.0;
+    const PieceStone& s = piece.stones[stone];
+    for (const glm::dvec3& v : piece.kinds[s.kind].vertices) {
+        const glm::dvec3 p = s.placement.to_piece(v);
+        double best = HUGE_VAL;
+        for (const glm::dvec3& e : expected) best = std::min(best, glm::length(p - e));
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+TEST(GltfPiece, StonesAndMetalAsACadExportWritesThem) {
+    const Stone big = brilliant(2.0), small = brilliant(1.5);
+    Glb glb;
+    const int gold = glb.material({{"name", "Yellow gold"},
+                                   {"pbrMetallicRoughness",
+                                    {{"baseColorFactor", {1.0, 0.78, 0.34, 1.0}},
+                                     {"metallicFactor", 1.0},
+                                     {"roughnessFactor", 0.2}}}});
+    const int gem = glb.material({{"name", "Gem"},
+                                  {"extensions",
+                                   {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+                                    {"KHR_materials_ior", {{"ior", 2.2}}},
+                                    {"KHR_materials_dispersion", {{"dispersion", 0.5}}}}}});
+    const int paint = glb.material({{"name", "Paint 3"}});
+    // The big stone's mesh used by two nodes, turned about y; the small one by a node named as
+    // CAD names stones, and mirrored by another.
+    const int big_mesh = glb.mesh("Round 2mm", metres(big), triangles(big), gem);
+    const int small_mesh = glb.mesh("obj_17", metres(small), triangles(small), paint);
+    const double lift = -culet_y(big);  // every culet at the plate
+    const double small_lift = -culet_y(small);
+    const auto about_y = [](double deg) {
+        const double h = deg * std::numbers::pi / 360.0;
+        return json::array({0.0, std::sin(h), 0.0, std::cos(h)});
+    };
+    glb.node({{"name", "Diamond_1"},
+              {"mesh", big_mesh},
+              {"translation", {-0.003, lift / 1000.0, 0.0}},
+              {"rotation", about_y(30.0)}});
+    glb.node({{"name", "Diamond_2"},
+              {"mesh", big_mesh},
+              {"translation", {0.0, lift / 1000.0, 0.0}},
+              {"rotation", about_y(75.0)}});
+    glb.node({{"name", "dia045"},
+              {"mesh", small_mesh},
+              {"translation", {0.003, small_lift / 1000.0, 0.0}}});
+    glb.node({{"name", "Gem 01"},
+              {"mesh", small_mesh},
+              {"translation", {0.0055, small_lift / 1000.0, 0.0}},
+              {"scale", {-1.0, 1.0, 1.0}}});
+    add_plate(glb, 0.0, gold);
+    const fs::path file = artifact("cad-like.glb");
+    glb.write(file);
+
+    std::vector<std::string> log;
+    auto read = load_piece(file, &log);
+    ASSERT_TRUE(read) << read.error();
+    const Piece& piece = read.value();
+    for (const std::string& line : log) std::printf("%s\n", line.c_str());
+    ASSERT_EQ(piece.stones.size(), 4u);
+    // One kind for the big stone's two placements, one for the small one, one for its mirror.
+    EXPECT_EQ(piece.kinds.size(), 3u);
+    EXPECT_EQ(describe(piece), "piece cad-like: 4 stones (3 distinct), 12 metal triangles");
+    // Each stone where its node put it, corner for corner (mm), found by its position.
+    const auto expect_at = [&](glm::dvec3 centre_mm, const Stone& stone, double turn_deg,
+                               bool mirror) {
+        std::vector<glm::dvec3> corners;
+        const double a = turn_deg * std::numbers::pi / 180.0;
+        for (glm::dvec3 v : stone.vertices) {
+            if (mirror) v.x = -v.x;
+            corners.push_back(centre_mm + glm::dvec3(std::cos(a) * v.x + std::sin(a) * v.z, v.y,
+                                                     -std::sin(a) * v.x + std::cos(a) * v.z));
+        }
+        std::size_t nearest = 0;
+        for (std::size_t i = 1; i < piece.stones.size(); ++i) {
+            if (glm::length(piece.stones[i].placement.position - centre_mm) <
+                glm::length(piece.stones[nearest].placement.position - centre_mm)) {
+                nearest = i;
+            }
+        }
+        EXPECT_LT(corner_error(piece, nearest, corners), 1e-4) << piece.stones[nearest].role;
+        const Stone& kind = piece.kinds[piece.stones[nearest].kind];
+        EXPECT_EQ(kind.facets.size(), stone.facets.size()) << piece.stones[nearest].role;
+        EXPECT_TRUE(kind.convex) << piece.stones[nearest].role;
+        return kind;
+    };
+    const Stone first = expect_at({-3.0, lift, 0.0}, big, 30.0, false);
+    expect_at({0.0, lift, 0.0}, big, 75.0, false);
+    const Stone by_name = expect_at({3.0, small_lift, 0.0}, small, 0.0, false);
+    expect_at({5.5, small_lift, 0.0}, small, 0.0, true);
+    // The big stones are the centre (the first stone).
+    EXPECT_EQ(piece.kinds[piece.stones[0].kind].facets.size(), big.facets.size());
+    // The gem extensions: n_d 2.2; 20 / 0.5 = Abbe number 40, so n_F − n_C = (n_d − 1) / 40.
+    EXPECT_NEAR(first.material.index(587.6), 2.2, 1e-9);
+    EXPECT_NEAR(first.material.index(486.1) - first.material.index(656.3), 1.2 / 40.0, 1e-9);
+    // Recognised by name only: diamond, the default.
+    EXPECT_NEAR(by_name.material.index(), find_material("diamond")->index(), 1e-12);
+    // The metal: F0 is the base colour of a metallic material.
+    EXPECT_NEAR(piece.metal.f0.y, 0.78f, 1e-6f);
+    EXPECT_NEAR(piece.metal.roughness, 0.2f, 1e-6f);
+    // Each stone says how it was recognised.
+    ASSERT_EQ(log.size(), 3u);
+    EXPECT_NE(log[0].find("its material 'Gem' is transmissive"), std::string::npos) << log[0];
+    EXPECT_NE(log[1].find("its node's name 'dia045'"), std::string::npos) << log[1];
+    EXPECT_NE(log[2].find("its node's name 'Gem 01'"), std::string::npos) << log[2];
+}
+
+// A stone stored in float32 metres far from the file's origin has its corners rounded by up
+// to 2^-24 of their distance: its facets must still come out as the cut's, convex.
+TEST(GltfPiece, FacetsSurviveFloatRoundingFarFromTheOrigin) {
+    const Stone s = brilliant(1.5);
+    for (double off : {0.0, 1.0, 3.0, 10.0, 30.0}) {
+        Glb glb;
+        glb.node({{"name", "Diamond"},
+                  {"mesh", glb.mesh("d", metres(s, {off, -culet_y(s), 0}), triangles(s), -1)}});
+        add_plate(glb, 0.0, -1);
+        const fs::path file = artifact("far.glb");
+        glb.write(file);
+        auto read = load_piece(file);
+        ASSERT_TRUE(read) << read.error();
+        const Stone& kind = read.value().kinds[0];
+        EXPECT_EQ(kind.facets.size(), s.facets.size()) << off << " mm from the origin";
+        EXPECT_TRUE(kind.convex) << off << " mm from the origin";
+    }
+}
+
+TEST(GltfPiece, StonesMergedIntoOneMeshComeApart) {
+    const Stone s = brilliant(1.5);
+    std::vector<glm::dvec3> p = metres(s, {-1.0, -culet_y(s), 0.0});
+    auto t = triangles(s);
+    const auto second = metres(s, {1.0, -culet_y(s), 0.0});
+    const auto base = static_cast<std::uint32_t>(p.size());
+    p.insert(p.end(), second.begin(), second.end());
+    for (auto tri : triangles(s)) t.push_back({tri[0] + base, tri[1] + base, tri[2] + base});
+    Glb glb;
+    glb.node({{"name", "Pave diamonds"}, {"mesh", glb.mesh("merged", p, t, -1)}});
+    add_plate(glb, 0.0, -1);
+    const fs::path file = artifact("merged.glb");
+    glb.write(file);
+    auto read = load_piece(file);
+    ASSERT_TRUE(read) << read.error();
+    ASSERT_EQ(read.value().stones.size(), 2u);
+    for (const PieceStone& stone : read.value().stones) {
+        EXPECT_NEAR(std::abs(stone.placement.position.x), 1.0, 1e-6);
+        EXPECT_EQ(read.value().kinds[stone.kind].facets.size(), s.facets.size());
+    }
+}
+
+// One message each, naming the file and the fault.
+TEST(GltfPiece, DamagedAndUnsupportedFilesAreOneMessage) {
+    const Stone s = brilliant(1.5);
+    const auto expect_error = [](const fs::path& file, const std::string& part) {
+        auto read = load_piece(file);
+        ASSERT_FALSE(read) << file;
+        EXPECT_NE(read.error().find(file.string()), std::string::npos) << read.error();
+        EXPECT_NE(read.error().find(part), std::string::npos) << read.error();
+    };
+    const auto good = [&] {
+        Glb glb;
+        glb.node({{"name", "Diamond"},
+                  {"mesh", glb.mesh("d", metres(s, {0, -culet_y(s), 0}), triangles(s), -1)}});
+        add_plate(glb, 0.0, -1);
+        return glb;
+    };
+    const fs::path text = artifact("not-gltf.glb");
+    std::ofstream(text) << "solid ring\nendsolid\n";
+    expect_error(text, "not glTF");
+
+    const fs::path whole = artifact("whole.glb");
+    good().write(whole);
+    std::ifstream in(whole, std::ios::binary);
+    std::string bytes((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const fs::path cut = artifact("truncated.glb");
+    std::ofstream(cut, std::ios::binary) << bytes.substr(0, bytes.size() / 2);
+    expect_error(cut, "not read as glTF");
+    const fs::path header = artifact("header-only.glb");
+    std::ofstream(header, std::ios::binary) << bytes.substr(0, 16);
+    expect_error(header, "truncated");
+
+    Glb outside = good();
+    outside.doc()["bufferViews"][0]["byteLength"] = 1 << 20;
+    const fs::path far = artifact("outside.glb");
+    outside.write(far);
+    expect_error(far, "reaches outside its buffer");
+
+    Glb packed = good();
+    packed.doc()["extensionsRequired"] = {"EXT_meshopt_compression"};
+    const fs::path meshopt = artifact("meshopt.glb");
+    packed.write(meshopt);
+    expect_error(meshopt, "compressed with EXT_meshopt_compression");
+
+    Glb cycle = good();
+    cycle.doc()["nodes"][0]["children"] = {1};
+    cycle.doc()["nodes"][1]["children"] = {0};
+    const fs::path loop = artifact("cycle.glb");
+    cycle.write(loop);
+    expect_error(loop, "reached twice");
+
+    Glb open;
+    auto tris = triangles(s);
+    tris.pop_back();
+    open.node(
+        {{"name", "Diamond"}, {"mesh", open.mesh("d", metres(s, {0, -culet_y(s), 0}), tris, -1)}});
+    add_plate(open, 0.0, -1);
+    const fs::path holed = artifact("open.glb");
+    open.write(holed);
+    expect_error(holed, "node 'Diamond'");
+
+    Glb bare;
+    add_plate(bare, 0.0, -1);
+    const fs::path metal = artifact("metal-only.glb");
+    bare.write(metal);
+    expect_error(metal, "no stone found");
+}
+
+}  // namespace
+}  // namespace gem
