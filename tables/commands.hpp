@@ -57,6 +57,8 @@ struct InspectOptions {
 int run_build(const BuildOptions& options);
 int run_catalogue(const CatalogueOptions& options);
 int run_info(const std::string& database);
+// gemtables piece: a piece (.toml, .glb, .gltf) written as a .glb.
+int run_piece(const std::string& piece_file, const std::string& out);
 int run_verify(const VerifyOptions& options);
 int run_inspect(const InspectOptions& options);
 

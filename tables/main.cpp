@@ -1,6 +1,6 @@
 // gemtables: the pre-computation stage. Builds a stone's ray-table database, and checks,
-// describes and pictures existing ones. A thin main: the work is in the engine and the
-// command files beside this one.
+// describes and pictures existing ones; writes pieces as glTF. A thin main: the work is in the
+// engine and the command files beside this one.
 #include <cstdio>
 #include <exception>
 #include <string>
@@ -89,6 +89,12 @@ int main(int argc, char** argv) {
     CLI::App* i = app.add_subcommand("info", "header, stone, parameters and sizes of a database");
     i->add_option("database", info_db, "database (.gemdb)")->required();
 
+    std::string piece_in, piece_out;
+    CLI::App* p = app.add_subcommand(
+        "piece", "a piece (.toml, .glb, .gltf) written as glTF 2.0 (.glb) for a web catalogue");
+    p->add_option("piece", piece_in, "piece description (.toml) or glTF file")->required();
+    p->add_option("-o,--out", piece_out, "the .glb to write")->required();
+
     CatalogueOptions catalogue;
     CLI::App* c = app.add_subcommand(
         "catalogue", "a folder of designs into a kiosk catalogue (tables only where they pay)");
@@ -154,6 +160,7 @@ int main(int argc, char** argv) {
         return run_catalogue(catalogue);
     }
     if (i->parsed()) return run_info(info_db);
+    if (p->parsed()) return run_piece(piece_in, piece_out);
     if (v->parsed()) return run_verify(verify);
     inspect.azimuth_deg = direction[0];
     inspect.elevation_deg = direction[1];

@@ -9,6 +9,8 @@
 // Refused with one message naming the file and the fault: a file that is not glTF, a truncated
 // .glb, an accessor reaching outside its buffer, a primitive that is not triangles, a node tree
 // with a cycle, an extension the file requires that is not read here (Draco, meshopt).
+//
+// glb_bytes writes a document as a .glb, with the same library.
 
 #include <array>
 #include <cstdint>
@@ -35,6 +37,7 @@ struct GltfMaterial {
     std::optional<double> dispersion;    // KHR_materials_dispersion: 20 / Abbe number
     glm::dvec3 attenuation_colour{1.0};  // KHR_materials_volume
     double attenuation_distance_m = std::numeric_limits<double>::infinity();
+    double thickness_m = 0.0;  // KHR_materials_volume's thicknessFactor: 0 is thin-walled
     std::vector<std::string> extensions;  // every extension the material carries
 };
 
@@ -47,6 +50,7 @@ struct GltfPart {
     int material = -1;                  // into GltfDocument::materials; -1: the default material
     glm::dmat4 to_scene{1.0};           // the node's transform, metres
     std::vector<glm::dvec3> positions;  // the mesh's own frame
+    std::vector<glm::dvec3> normals;    // by position, when the file gives them; else empty
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 
@@ -55,6 +59,13 @@ struct GltfDocument {
     std::vector<GltfPart> parts;
     std::size_t images_ignored = 0;  // textures are not read (pieces shade by material factors)
 };
+
+// The document as a .glb: each part one node (its transform written as a translation, rotation
+// and scale where it is one, else as a matrix); parts of one mesh_index share one mesh, the
+// first such part's triangles; each material with the extensions its fields set
+// (KHR_materials_transmission where transmissive, _ior, _dispersion, and _volume where it has
+// a thickness). `generator` goes into the file's asset.
+Result<std::string> glb_bytes(const GltfDocument& doc, const std::string& generator);
 
 Result<GltfDocument> read_gltf(const std::filesystem::path& path);
 // The same from the file's bytes: `name` stands for the file in messages, `base` is where a

@@ -153,7 +153,11 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
         constexpr int kSteps = 4;
         for (int i = 1; i <= kSteps && leave_y > knee_y; ++i) {
             const double y = leave_y + (knee_y - leave_y) * i / kSteps;
-            const glm::dvec3 p = at(clear_at(y, wire + kClearanceMm), y);
+            double r = clear_at(y, wire + kClearanceMm);
+            // Each point clears the pavilion, but the straight wire between two may cut its
+            // bulge (a pointed culet between steps): moved out until the whole wire clears.
+            for (int j = 0; j < 40 && !wire_clears(previous, at(r, y), 0.0); ++j) r += 0.02 * w;
+            const glm::dvec3 p = at(r, y);
             b.cylinder(p, previous, wire, -out, 8);
             b.sphere(p, wire, 8, 12);
             previous = p;
@@ -161,7 +165,12 @@ Result<bool> add_claws(const ClawParams& params, const Stone& stone, std::size_t
         if (foot_y < knee_y)
             b.cylinder(at(glm::dot(previous, out), foot_y), previous, wire, -out, 8);
         knees.push_back(previous);
-        b.cylinder(bend, tip.centre, wire, glm::dvec3(0, 1, 0), 8);
+        // The wire ends where its rim meets the tip's ball, so no part of it reaches past the
+        // ball toward the stone (the ball alone is seated; wire_clears checks the rest).
+        const glm::dvec3 toward = glm::normalize(bend - tip.centre);
+        const glm::dvec3 wire_end =
+            tip.centre + std::sqrt(std::max(ball * ball - wire * wire, 0.0)) * toward;
+        b.cylinder(bend, wire_end, wire, glm::dvec3(0, 1, 0), 8);
         b.sphere(bend, wire, 8, 12);
         b.sphere(tip.centre, ball, 10, 16);
         holds.push_back({index, placement.to_piece(tip.centre), ball});

@@ -11,6 +11,7 @@
 #include "geometry/polyhedron.hpp"
 #include "import/gltf_document.hpp"
 #include "import/import_text.hpp"
+#include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_check.hpp"
 #include "render/camera.hpp"
 
@@ -94,7 +95,10 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
     Material material = *find_material("diamond");
     bool named = false;
     for (const std::string& name : {m ? m->name : std::string(), part.mesh, part.node}) {
-        for (const std::string& w : words_of(name)) {
+        std::vector<std::string> candidates = words_of(name);
+        candidates.insert(candidates.begin(), name);  // the whole name first: "cubic zirconia"
+        for (const std::string& w : candidates) {
+            if (w.empty()) continue;
             if (auto found = find_material(w)) {
                 material = *found;
                 named = true;
@@ -105,14 +109,30 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
     }
     described = material.name + (named ? " (by name)" : " (the default)");
     if (m == nullptr) return material;
+    // A built-in material named by the file, whose index and fire the file repeats (as this
+    // project writes them, gltf_piece_writer.hpp), keeps its own dispersion curve and colour.
+    const bool ior_agrees = !m->ior || std::abs(*m->ior - material.index(587.6)) < 1e-3;
+    const double built_in_vd = abbe_number(material);
+    const bool fire_agrees =
+        !m->dispersion || (std::isfinite(built_in_vd) && *m->dispersion > 0.0 &&
+                           std::abs(20.0 / *m->dispersion / built_in_vd - 1.0) < 0.01);
+    const bool as_built_in = named && ior_agrees && fire_agrees;
+    if (as_built_in && (m->ior || m->dispersion)) {
+        described += ", its index and fire as the file gives them";
+    }
+    if (!as_built_in && m->transmission > 0.0) {
+        // glTF tints what a transmissive material lets through by its base colour: the
+        // thesis' stone colour.
+        material.body_colour = glm::clamp(m->base_colour, 0.0, 1.0);
+    }
     char text[160];
-    if (m->ior && std::abs(*m->ior - material.index()) > 1e-3) {
+    if (!as_built_in && m->ior && std::abs(*m->ior - material.index()) > 1e-3) {
         // The file's index over the built-in one: no dispersion unless the file gives it.
         material.dispersion = Dispersion::constant_index(*m->ior);
         std::snprintf(text, sizeof text, ", n %.3f from KHR_materials_ior", *m->ior);
         described += text;
     }
-    if (m->dispersion && *m->dispersion > 0.0) {
+    if (!as_built_in && m->dispersion && *m->dispersion > 0.0) {
         // KHR_materials_dispersion: dispersion = 20 / V_d, and n(λ) = A + B / λ² with
         // B = (n_d − 1) / (V_d (λ_F⁻² − λ_C⁻²)), A = n_d − B / λ_d² (the extension's
         // specification; λ_F 486.1, λ_d 587.6, λ_C 656.3 nm, here in µm).
@@ -221,13 +241,20 @@ void add_metal(const import::GltfPart& part, const import::GltfMaterial* m, Meta
     for (std::size_t i = 0; i < placed.size(); ++i) {
         placed[i] = glm::dvec3(to * glm::dvec4(part.positions[i], 1.0)) * kMetresToMm;
     }
-    // Corners share an area-weighted average of their faces' normals, per vertex as the file
-    // splits them (a crease keeps its edge).
+    // The file's normals, taken to the scene by the inverse transpose; without them, corners
+    // share an area-weighted average of their faces' normals, per vertex as the file splits
+    // them (a crease keeps its edge).
     std::vector<glm::dvec3> normal(placed.size(), glm::dvec3(0.0));
-    for (auto t : part.triangles) {
-        if (mirrored) std::swap(t[1], t[2]);
-        const glm::dvec3 g = glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
-        for (std::uint32_t c : t) normal[c] += g;
+    if (part.normals.size() == placed.size()) {
+        const glm::dmat3 to_normal = glm::transpose(glm::inverse(glm::dmat3(to)));
+        for (std::size_t i = 0; i < placed.size(); ++i) normal[i] = to_normal * part.normals[i];
+    } else {
+        for (auto t : part.triangles) {
+            if (mirrored) std::swap(t[1], t[2]);
+            const glm::dvec3 g =
+                glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
+            for (std::uint32_t c : t) normal[c] += g;
+        }
     }
     const auto base = static_cast<std::uint32_t>(metal.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
@@ -327,8 +354,10 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             } else {
                 at.position = centre * kMetresToMm;
             }
-            const auto key =
-                std::make_tuple(part.mesh_index, part.primitive, c, rigid ? rigid->second : -1.0);
+            // The scale as a key, rounded: nodes' rotations written as quaternions leave their
+            // determinants 1 ± 1e-16.
+            const double scale_key = rigid ? std::round(rigid->second * 1e9) : -1.0;
+            const auto key = std::make_tuple(part.mesh_index, part.primitive, c, scale_key);
             std::size_t kind = piece.kinds.size();
             if (auto found = shared_kinds.find(key); rigid && found != shared_kinds.end()) {
                 kind = found->second;
@@ -352,13 +381,15 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     }
     if (piece.stones.empty())
         return fail("no stone found (see config/pieces/README.md: how a stone is recognised)");
-    // The largest stone is the centre, the picture's hero.
+    // The largest stone is the centre, the picture's hero; among stones of one size (within
+    // the file's rounding) the first.
     const auto radius = [&](const PieceStone& s) {
         return bounding_radius(piece.kinds[s.kind].vertices);
     };
-    const auto hero = std::max_element(
-        piece.stones.begin(), piece.stones.end(),
-        [&](const PieceStone& a, const PieceStone& b) { return radius(a) < radius(b); });
+    const auto hero = std::max_element(piece.stones.begin(), piece.stones.end(),
+                                       [&](const PieceStone& a, const PieceStone& b) {
+                                           return radius(a) * (1.0 + 1e-6) < radius(b);
+                                       });
     std::rotate(piece.stones.begin(), hero, hero + 1);
     if (log != nullptr && doc.images_ignored > 0) {
         log->push_back(std::to_string(doc.images_ignored) +

@@ -78,8 +78,17 @@ void MeshBuilder::torus(const glm::dvec3& c, const glm::dvec3& e0, const glm::dv
 
 void MeshBuilder::cylinder(const glm::dvec3& a, const glm::dvec3& c, double radius,
                            const glm::dvec3& e1, int sides) {
-    const glm::dvec3 axis = glm::normalize(c - a);
-    const glm::dvec3 u = glm::normalize(e1 - glm::dot(e1, axis) * axis);
+    // A wire of no length has no wall (the spheres at its ends round the joint); normalising
+    // it would put NaNs into the mesh. An `e1` along the axis gives way to any perpendicular.
+    const double length = glm::length(c - a);
+    if (!(length > 1e-9)) return;
+    const glm::dvec3 axis = (c - a) / length;
+    glm::dvec3 across = e1 - glm::dot(e1, axis) * axis;
+    if (!(glm::length(across) > 1e-9)) {
+        const glm::dvec3 other = std::abs(axis.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 0, 1);
+        across = other - glm::dot(other, axis) * axis;
+    }
+    const glm::dvec3 u = glm::normalize(across);
     const glm::dvec3 v = glm::cross(axis, u);
     std::vector<std::uint32_t> side_a, side_c, cap_a, cap_c;
     for (int j = 0; j < sides; ++j) {

@@ -3,10 +3,12 @@
 
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <string>
 
+#include "piece/piece_check.hpp"
 #include "piece/piece_file.hpp"
 #include "piece/stone_shape.hpp"
 #include "scene/stone_file.hpp"
@@ -58,6 +60,29 @@ TEST(PieceFile, TheSamplesLoadAsTheirSettings) {
                          0),
               0u)
         << describe(band.value());
+}
+
+// Every sample's metal is a mesh a GPU and a glTF validator take: finite positions, unit
+// normals. (A claw's wire of no length once normalised its axis into NaNs.)
+TEST(PieceFile, EverySampleHasFiniteMetalAndPassesThePieceCheck) {
+    for (const auto& entry : fs::directory_iterator(kPieces)) {
+        if (entry.path().extension() != ".toml") continue;
+        auto piece = load_piece(entry.path());
+        ASSERT_TRUE(piece) << piece.error();
+        const MetalMesh& metal = piece.value().metal;
+        ASSERT_EQ(metal.positions.size(), metal.normals.size());
+        std::size_t bad = 0;
+        for (std::size_t i = 0; i < metal.positions.size(); ++i) {
+            const glm::vec3 p = metal.positions[i];
+            const float n = glm::length(metal.normals[i]);
+            if (!std::isfinite(p.x + p.y + p.z) || !(std::abs(n - 1.0f) < 1e-4f)) ++bad;
+        }
+        EXPECT_EQ(bad, 0u) << entry.path().filename();
+        // And every sample holds its stones as a free piece must (a heart's pointed culet was
+        // once cut into by the straight wire between two of its basket's steps).
+        auto held = check_piece(piece.value());
+        EXPECT_TRUE(held) << entry.path().filename() << ": " << held.error();
+    }
 }
 
 // Each kind of stone remembers its description and the width the piece sized it to, so that
