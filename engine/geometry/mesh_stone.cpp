@@ -86,6 +86,17 @@ glm::dvec3 area_vector(const std::vector<glm::dvec3>& v, const Tri& t) {
     return glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
 }
 
+// How well a triangle's corners fix its normal: twice its area over its longest edge squared
+// (its height over its longest edge; near 0 for a sliver).
+double shape_quality(const std::vector<glm::dvec3>& v, const Tri& t) {
+    double longest = 0.0;
+    for (int k = 0; k < 3; ++k) {
+        const glm::dvec3 e = v[t[(k + 1) % 3]] - v[t[k]];
+        longest = std::max(longest, glm::dot(e, e));
+    }
+    return longest > 0.0 ? glm::length(area_vector(v, t)) / longest : 0.0;
+}
+
 // The boundary of a triangle group as one closed loop, or empty when it is not a single
 // simple cycle (a facet with a hole, or two pieces touching at a vertex).
 std::vector<std::uint32_t> boundary_loop(
@@ -242,12 +253,15 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
                              " fold over each other"};
             }
             if (glm::dot(n, m) <= 0.0) continue;
+            // They share an edge, so they are coplanar when the far corner of one lies in the
+            // other's plane. The plane is taken from the better-shaped of the two: a sliver's
+            // normal tilts with any rounding of its corners (a girdle facet split corner to
+            // corner), a well-shaped triangle's barely does.
+            const bool t_better = shape_quality(v, tris[t]) >= shape_quality(v, tris[u]);
+            const glm::dvec3& plane = t_better ? n : m;
             bool coplanar = true;
-            for (std::uint32_t w : tris[u]) {
-                coplanar = coplanar && std::abs(glm::dot(n, v[w] - v[a])) <= planar_tol;
-            }
-            for (std::uint32_t w : tris[t]) {
-                coplanar = coplanar && std::abs(glm::dot(m, v[w] - v[a])) <= planar_tol;
+            for (std::uint32_t w : tris[t_better ? u : t]) {
+                coplanar = coplanar && std::abs(glm::dot(plane, v[w] - v[a])) <= planar_tol;
             }
             if (coplanar) groups.unite(t, u);
         }

@@ -19,6 +19,7 @@
 #include <set>
 #include <sstream>
 
+#include <meshoptimizer.h>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
@@ -29,21 +30,18 @@ namespace gem::import {
 
 namespace {
 
-// Extensions a file may require that this reader honours: the gem materials (read), the
-// quantised positions (decoded below), and ones whose absence changes only textures or
-// highlights (ignored).
-const std::set<std::string> kReadable = {"KHR_materials_ior",
-                                         "KHR_materials_transmission",
-                                         "KHR_materials_volume",
-                                         "KHR_materials_dispersion",
-                                         "KHR_mesh_quantization",
-                                         "KHR_materials_specular",
-                                         "KHR_materials_emissive_strength",
-                                         "KHR_texture_transform"};
+// Extensions a file may require that this reader honours: meshopt's compression and GPU
+// instancing, the gem materials (read), the quantised positions (decoded below), and ones
+// whose absence changes only textures or highlights (ignored).
+const std::set<std::string> kReadable = {
+    "EXT_meshopt_compression",    "EXT_mesh_gpu_instancing", "KHR_materials_ior",
+    "KHR_materials_transmission", "KHR_materials_volume",    "KHR_materials_dispersion",
+    "KHR_mesh_quantization",      "KHR_materials_specular",  "KHR_materials_emissive_strength",
+    "KHR_texture_transform"};
 
 // The JSON of a .glb (its first chunk) or of a .gltf, for a look at what the file requires
-// before the library reads it: a file compressed with meshopt fails inside the library with a
-// message about byte lengths, not about the extension it lacks.
+// before the library reads it: a file compressed with Draco would fail inside the library with
+// a message about byte lengths, not about the extension it lacks.
 Result<std::string_view> json_of(std::string_view bytes) {
     if (bytes.size() < 4 || bytes.substr(0, 4) != "glTF") return bytes;
     if (bytes.size() < 20) return Error{"a .glb shorter than its header (truncated)"};
@@ -57,23 +55,65 @@ Result<std::string_view> json_of(std::string_view bytes) {
     return bytes.substr(20, json_length);
 }
 
-Result<bool> check_required(std::string_view json) {
-    const nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
+// The file's JSON checked before the library reads it: every extension it requires is one
+// read here. Returned changed when EXT_meshopt_compression's fallback buffers (which hold no
+// data, as the extension allows) must be given one byte each, since the library would
+// otherwise look for them in the .glb's binary chunk or a file; nothing reads them.
+Result<std::optional<std::string>> check_json(std::string_view json) {
+    nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return Error{"not glTF: its JSON does not parse"};
-    const auto required = doc.find("extensionsRequired");
-    if (required == doc.end()) return true;
-    if (!required->is_array()) return Error{"extensionsRequired is not a list"};
-    for (const nlohmann::json& name : *required) {
-        if (!name.is_string()) return Error{"extensionsRequired holds a non-string"};
-        const std::string n = name.get<std::string>();
-        if (kReadable.contains(n)) continue;
-        if (n == "KHR_draco_mesh_compression" || n == "EXT_meshopt_compression") {
-            return Error{"its meshes are compressed with " + n +
-                         ", which this reader does not decode; export the piece uncompressed"};
+    if (const auto required = doc.find("extensionsRequired"); required != doc.end()) {
+        if (!required->is_array()) return Error{"extensionsRequired is not a list"};
+        for (const nlohmann::json& name : *required) {
+            if (!name.is_string()) return Error{"extensionsRequired holds a non-string"};
+            const std::string n = name.get<std::string>();
+            if (kReadable.contains(n)) continue;
+            if (n == "KHR_draco_mesh_compression") {
+                return Error{"its meshes are compressed with " + n +
+                             ", which this reader does not decode; export the piece uncompressed "
+                             "or with meshopt (gltfpack -c)"};
+            }
+            return Error{"it requires the extension " + n + ", which this reader does not know"};
         }
-        return Error{"it requires the extension " + n + ", which this reader does not know"};
     }
-    return true;
+    bool changed = false;
+    if (const auto buffers = doc.find("buffers"); buffers != doc.end() && buffers->is_array()) {
+        for (nlohmann::json& buffer : *buffers) {
+            if (!buffer.is_object() || buffer.contains("uri")) continue;
+            const nlohmann::json* ext = nullptr;
+            if (auto e = buffer.find("extensions"); e != buffer.end() && e->is_object()) {
+                if (auto m = e->find("EXT_meshopt_compression"); m != e->end()) ext = &*m;
+            }
+            if (ext == nullptr || !ext->is_object() || ext->value("fallback", false) != true) {
+                continue;
+            }
+            buffer["uri"] = "data:application/octet-stream;base64,AA==";
+            buffer["byteLength"] = 1;
+            changed = true;
+        }
+    }
+    if (!changed) return std::optional<std::string>();
+    return std::optional<std::string>(doc.dump());
+}
+
+// A .glb with its JSON chunk replaced by `json` (padded with spaces, as the format asks) and
+// its other chunks as they were.
+std::string glb_with_json(std::string_view glb, const std::string& json) {
+    std::uint32_t old_length = 0;
+    std::memcpy(&old_length, glb.data() + 12, 4);
+    const std::string_view rest = glb.substr(20 + std::size_t(old_length));
+    std::string padded = json;
+    padded.resize((padded.size() + 3) / 4 * 4, ' ');
+    std::string out;
+    const auto put = [&](std::uint32_t x) { out.append(reinterpret_cast<const char*>(&x), 4); };
+    put(0x46546C67u);  // "glTF"
+    put(2);
+    put(static_cast<std::uint32_t>(12 + 8 + padded.size() + rest.size()));
+    put(static_cast<std::uint32_t>(padded.size()));
+    put(0x4E4F534Au);  // "JSON"
+    out += padded;
+    out += rest;
+    return out;
 }
 
 // Images are not decoded: they are counted, and a piece is shaded by its material factors.
@@ -99,6 +139,76 @@ glm::dvec3 colour(const tinygltf::Value& object, const char* key, glm::dvec3 fal
         c[i] = v.Get(i).GetNumberAsDouble();
     }
     return c;
+}
+
+bool all_finite(const glm::dvec3& v) {
+    return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+}
+
+std::string text(const tinygltf::Value& object, const char* key, const std::string& fallback) {
+    if (!object.IsObject() || !object.Has(key)) return fallback;
+    const tinygltf::Value& v = object.Get(key);
+    return v.IsString() ? v.Get<std::string>() : fallback;
+}
+
+// EXT_meshopt_compression: each compressed buffer view decoded (meshoptimizer, the extension's
+// own decoder) into a buffer of its own, which the view then reads plainly. The parameters are
+// checked first: the decoder asserts on ones its format cannot have.
+Result<bool> decode_meshopt(tinygltf::Model& model) {
+    for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
+        tinygltf::BufferView& view = model.bufferViews[i];
+        const auto ext = view.extensions.find("EXT_meshopt_compression");
+        if (ext == view.extensions.end()) continue;
+        const tinygltf::Value& e = ext->second;
+        const std::string what = "buffer view " + std::to_string(i) + " (meshopt)";
+        const double buffer = number(e, "buffer", -1.0), offset = number(e, "byteOffset", 0.0),
+                     length = number(e, "byteLength", -1.0), stride = number(e, "byteStride", 0.0),
+                     count = number(e, "count", -1.0);
+        const std::string mode = text(e, "mode", ""), filter = text(e, "filter", "NONE");
+        if (!(buffer >= 0.0 && buffer < double(model.buffers.size()))) {
+            return Error{what + ": its buffer does not exist"};
+        }
+        const std::vector<unsigned char>& source = model.buffers[std::size_t(buffer)].data;
+        if (!(offset >= 0.0 && length >= 0.0 && offset + length <= double(source.size()))) {
+            return Error{what + ": reaches outside its buffer"};
+        }
+        if (!(count >= 0.0 && stride >= 1.0 && stride <= 256.0 && count * stride <= 1 << 30)) {
+            return Error{what + ": a count or stride out of range"};
+        }
+        const auto n = std::size_t(count), size = std::size_t(stride);
+        const bool index_size = size == 2 || size == 4;
+        std::vector<unsigned char> out(n * size);
+        const unsigned char* from = source.data() + std::size_t(offset);
+        int status = -1;
+        if (mode == "ATTRIBUTES" && size % 4 == 0) {
+            status = meshopt_decodeVertexBuffer(out.data(), n, size, from, std::size_t(length));
+        } else if (mode == "TRIANGLES" && index_size && n % 3 == 0) {
+            status = meshopt_decodeIndexBuffer(out.data(), n, size, from, std::size_t(length));
+        } else if (mode == "INDICES" && index_size) {
+            status = meshopt_decodeIndexSequence(out.data(), n, size, from, std::size_t(length));
+        } else {
+            return Error{what + ": mode '" + mode + "' with a stride of " + std::to_string(size) +
+                         " is not meshopt's"};
+        }
+        if (status != 0) return Error{what + ": its data does not decode"};
+        if (filter == "OCTAHEDRAL" && (size == 4 || size == 8)) {
+            meshopt_decodeFilterOct(out.data(), n, size);
+        } else if (filter == "QUATERNION" && size == 8) {
+            meshopt_decodeFilterQuat(out.data(), n, size);
+        } else if (filter == "EXPONENTIAL" && size % 4 == 0) {
+            meshopt_decodeFilterExp(out.data(), n, size);
+        } else if (filter != "NONE") {
+            return Error{what + ": filter '" + filter + "' with a stride of " +
+                         std::to_string(size) + " is not meshopt's"};
+        }
+        tinygltf::Buffer decoded;
+        decoded.data = std::move(out);
+        model.buffers.push_back(std::move(decoded));
+        view.buffer = static_cast<int>(model.buffers.size()) - 1;
+        view.byteOffset = 0;
+        view.byteLength = model.buffers.back().data.size();
+    }
+    return true;
 }
 
 GltfMaterial material_of(const tinygltf::Material& m) {
@@ -242,6 +352,66 @@ std::string node_name(const tinygltf::Model& model, int index) {
     return "node " + std::to_string(index) + (name.empty() ? "" : " '" + name + "'");
 }
 
+// EXT_mesh_gpu_instancing: the node's mesh drawn once per instance, each placed by its
+// translation, rotation and scale (in that order: T R S, within the node's frame). Nothing
+// when the node has no instances.
+Result<std::optional<std::vector<glm::dmat4>>> instances_of(const tinygltf::Model& model,
+                                                            int node_index) {
+    const tinygltf::Node& node = model.nodes[node_index];
+    const auto ext = node.extensions.find("EXT_mesh_gpu_instancing");
+    if (ext == node.extensions.end()) return std::optional<std::vector<glm::dmat4>>();
+    const std::string what = node_name(model, node_index) + " (EXT_mesh_gpu_instancing)";
+    const tinygltf::Value& attributes = ext->second.Get("attributes");
+    if (!attributes.IsObject()) return Error{what + ": no attributes"};
+    struct Attribute {
+        const char* name;
+        int components;
+        std::vector<double> values;
+    };
+    Attribute read[] = {{"TRANSLATION", 3, {}}, {"ROTATION", 4, {}}, {"SCALE", 3, {}}};
+    std::size_t count = 0;
+    bool any = false;
+    for (Attribute& a : read) {
+        if (!attributes.Has(a.name)) continue;
+        const tinygltf::Value& index = attributes.Get(a.name);
+        if (!index.IsNumber()) return Error{what + ": " + a.name + " is not an accessor"};
+        auto values = read_accessor(model, static_cast<int>(index.GetNumberAsDouble()),
+                                    a.components, what + " " + a.name);
+        if (!values) return Error{values.error()};
+        const std::size_t n = values.value().size() / static_cast<std::size_t>(a.components);
+        if (any && n != count) return Error{what + ": its attributes differ in count"};
+        count = n;
+        any = true;
+        a.values = std::move(values).value();
+    }
+    if (!any) return Error{what + ": no TRANSLATION, ROTATION or SCALE"};
+    std::vector<glm::dmat4> out(count, glm::dmat4(1.0));
+    for (std::size_t i = 0; i < count; ++i) {
+        glm::dmat4 m(1.0);
+        if (!read[0].values.empty()) {
+            m[3] = glm::dvec4(read[0].values[3 * i], read[0].values[3 * i + 1],
+                              read[0].values[3 * i + 2], 1.0);
+        }
+        if (!read[1].values.empty()) {
+            const double* q = &read[1].values[4 * i];
+            const glm::dquat r(q[3], q[0], q[1], q[2]);
+            if (!(glm::length(r) > 0.0)) return Error{what + ": a rotation of no length"};
+            m = m * glm::dmat4(glm::mat3_cast(glm::normalize(r)));
+        }
+        if (!read[2].values.empty()) {
+            const double* k = &read[2].values[3 * i];
+            m = m * glm::dmat4(glm::dmat3(glm::dvec3(k[0], 0, 0), glm::dvec3(0, k[1], 0),
+                                          glm::dvec3(0, 0, k[2])));
+        }
+        for (int c = 0; c < 4; ++c) {
+            if (!all_finite(glm::dvec3(m[c])))
+                return Error{what + ": a transform that is not a number"};
+        }
+        out[i] = m;
+    }
+    return std::optional<std::vector<glm::dmat4>>(std::move(out));
+}
+
 Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
                          const glm::dmat4& to_scene) {
     const tinygltf::Mesh& mesh = model.meshes[model.nodes[node].mesh];
@@ -262,10 +432,22 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
     part.primitive = primitive;
     part.material = p.material;
     part.to_scene = to_scene;
+    const tinygltf::Accessor& stored = model.accessors[position->second];
+    if (stored.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
+        // Quantised positions (KHR_mesh_quantization): one step of the integer, decoded.
+        const int bits =
+            8 * tinygltf::GetComponentSizeInBytes(static_cast<std::uint32_t>(stored.componentType));
+        const bool is_signed = stored.componentType == TINYGLTF_COMPONENT_TYPE_BYTE ||
+                               stored.componentType == TINYGLTF_COMPONENT_TYPE_SHORT;
+        part.position_step =
+            stored.normalized ? 1.0 / (std::ldexp(1.0, bits - (is_signed ? 1 : 0)) - 1.0) : 1.0;
+    }
     const std::vector<double>& v = xyz.value();
     part.positions.resize(v.size() / 3);
     for (std::size_t i = 0; i < part.positions.size(); ++i) {
         part.positions[i] = {v[3 * i], v[3 * i + 1], v[3 * i + 2]};
+        if (!all_finite(part.positions[i]))
+            return Error{what + ": a position that is not a number"};
     }
     if (const auto normal = p.attributes.find("NORMAL"); normal != p.attributes.end()) {
         auto n = read_accessor(model, normal->second, 3, what + " normals");
@@ -275,6 +457,8 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
         part.normals.resize(part.positions.size());
         for (std::size_t i = 0; i < part.normals.size(); ++i) {
             part.normals[i] = {n.value()[3 * i], n.value()[3 * i + 1], n.value()[3 * i + 2]};
+            if (!all_finite(part.normals[i]))
+                return Error{what + ": a normal that is not a number"};
         }
     }
     std::vector<double> indices;
@@ -488,14 +672,20 @@ Result<GltfDocument> parse_gltf(std::string_view data, const std::string& name,
     if (data.size() > std::numeric_limits<unsigned int>::max()) return fail("larger than 4 GB");
     auto json = json_of(data);
     if (!json) return fail(json.error());
-    if (auto required = check_required(json.value()); !required) return fail(required.error());
+    auto checked = check_json(json.value());
+    if (!checked) return fail(checked.error());
+    const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
+    std::string rewritten;
+    if (checked.value()) {
+        rewritten = binary ? glb_with_json(data, *checked.value()) : *checked.value();
+        data = rewritten;
+    }
 
     GltfDocument doc;
     tinygltf::TinyGLTF loader;
     loader.SetImageLoader(skip_image, &doc.images_ignored);
     tinygltf::Model model;
     std::string error, warning;
-    const bool binary = data.size() >= 4 && data.compare(0, 4, "glTF") == 0;
     const std::string base = base_dir.string();
     const bool ok =
         binary ? loader.LoadBinaryFromMemory(&model, &error, &warning,
@@ -508,6 +698,7 @@ Result<GltfDocument> parse_gltf(std::string_view data, const std::string& name,
         return fail("not read as glTF: " +
                     (error.empty() ? std::string("no reason given") : error));
     }
+    if (auto decoded = decode_meshopt(model); !decoded) return fail(decoded.error());
     for (const tinygltf::Material& m : model.materials) doc.materials.push_back(material_of(m));
 
     // The scene's node trees, each node's transform composed from its root; a node met again
@@ -537,15 +728,32 @@ Result<GltfDocument> parse_gltf(std::string_view data, const std::string& name,
         }
         const tinygltf::Node& node = model.nodes[step.node];
         const glm::dmat4 to_scene = step.parent * local_transform(node);
+        for (int c = 0; c < 4; ++c) {
+            if (!all_finite(glm::dvec3(to_scene[c])) || !std::isfinite(to_scene[c].w)) {
+                return fail(node_name(model, step.node) + ": a transform that is not a number");
+            }
+        }
         if (node.mesh >= static_cast<int>(model.meshes.size())) {
             return fail(node_name(model, step.node) + ": its mesh does not exist");
         }
         if (node.mesh >= 0) {
+            auto instances = instances_of(model, step.node);
+            if (!instances) return fail(instances.error());
             const tinygltf::Mesh& mesh = model.meshes[node.mesh];
             for (int p = 0; p < static_cast<int>(mesh.primitives.size()); ++p) {
                 auto part = part_of(model, step.node, p, to_scene);
                 if (!part) return fail(part.error());
-                doc.parts.push_back(std::move(part).value());
+                if (!instances.value()) {
+                    doc.parts.push_back(std::move(part).value());
+                    continue;
+                }
+                const std::vector<glm::dmat4>& each = *instances.value();
+                for (std::size_t i = 0; i < each.size(); ++i) {
+                    GltfPart placed = part.value();
+                    placed.node += " instance " + std::to_string(i);
+                    placed.to_scene = to_scene * each[i];
+                    doc.parts.push_back(std::move(placed));
+                }
             }
         }
         for (auto c = node.children.rbegin(); c != node.children.rend(); ++c) {

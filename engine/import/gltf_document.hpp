@@ -8,7 +8,9 @@
 //
 // Refused with one message naming the file and the fault: a file that is not glTF, a truncated
 // .glb, an accessor reaching outside its buffer, a primitive that is not triangles, a node tree
-// with a cycle, an extension the file requires that is not read here (Draco, meshopt).
+// with a cycle, an extension the file requires that is not read here (Draco). Meshes compressed
+// with EXT_meshopt_compression are decoded (meshoptimizer), and EXT_mesh_gpu_instancing's
+// instances are parts of their own.
 //
 // glb_bytes writes a document as a .glb, with the same library.
 
@@ -51,6 +53,9 @@ struct GltfPart {
     glm::dmat4 to_scene{1.0};           // the node's transform, metres
     std::vector<glm::dvec3> positions;  // the mesh's own frame
     std::vector<glm::dvec3> normals;    // by position, when the file gives them; else empty
+    // One step of the file's quantised positions (KHR_mesh_quantization), in the mesh's
+    // frame; 0 for float positions.
+    double position_step = 0.0;
     std::vector<std::array<std::uint32_t, 3>> triangles;
 };
 

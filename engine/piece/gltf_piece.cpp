@@ -196,13 +196,22 @@ std::vector<std::vector<std::array<std::uint32_t, 3>>> connected_pieces(
 }
 
 // The coplanarity tolerance, relative to the stone's size, for its float32 positions as the
-// file stores them, up to `far` from the file's origin: their rounding (2^-24 of the coordinate)
-// tilts the normal of a facet's thinnest triangle (a girdle facet, many times longer than high),
-// which its far corner then shows many times over. Measured (GltfPiece.FacetsSurvive...): a
-// 1.5 mm brilliant stored in metres 1 mm from the origin needs 33 times that rounding over
-// far / size to keep its 89 facets; 100 is used. Real facets differ by a degree or more, so
-// even a stone 20 sizes from the origin (1.2e-4) keeps them apart. Never below the default.
-double planar_tolerance(const std::vector<glm::dvec3>& stored) {
+// file stores them, up to `far` from the file's origin: their rounding (2^-24 of the
+// coordinate) tilts facets' triangles (the better-shaped of two neighbours gives the plane,
+// stone_from_triangles). Measured (GltfPiece.FacetsSurvive...): a 1.5 mm brilliant stored in
+// metres 1 mm from the origin keeps its 89 facets from 5 times that rounding over far / size
+// (not at 2); 20 is used. Real facets differ by a degree or more, so even a stone 20 sizes from
+// the origin (2.4e-5) keeps them apart. Never below the default.
+//
+// Quantised positions (KHR_mesh_quantization) are rounded to a grid of `step`: kQuantisedSteps
+// of it. Measured on the halo written here and re-packed by gltfpack (its positions one grid
+// over the whole 24.5 mm ring): at 16 bits (0.4 µm) both stones keep their 89 facets from 2
+// steps; at 14 bits (1.5 µm, gltfpack's default) the 5.8 mm centre needs 4, and the 1.3 mm
+// melee's 26 µm girdle merges into its neighbours at any tolerance that joins its split
+// facets: it is drawn as the non-convex mesh it has become (docs/gltf.md).
+constexpr double kQuantisedSteps = 4.0;
+
+double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
     double far = 0.0;
     glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
     for (const glm::dvec3& p : stored) {
@@ -213,7 +222,8 @@ double planar_tolerance(const std::vector<glm::dvec3>& stored) {
     const double size = glm::length(hi - lo);
     if (!(size > 0.0)) return kPlanarRelative;
     constexpr double kFloatRounding = 1.0 / (1 << 24);
-    return std::max(kPlanarRelative, 100.0 * kFloatRounding * far / size);
+    return std::max(
+        {kPlanarRelative, 20.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
 }
 
 // The node's transform as a rotation and a uniform scale, when it is one (no mirror, no
@@ -302,7 +312,13 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     bool first_metal = true;
     // Kinds made from a mesh's own frame, by (mesh, primitive, connected piece, scale).
     std::map<std::tuple<int, int, std::size_t, double>, std::size_t> shared_kinds;
+    // How far quantised positions may stand from where the piece had them: half a step along
+    // each axis, for the stone and for the metal against it.
+    double rounding_mm = 0.0;
     for (const import::GltfPart& part : doc.parts) {
+        const double node_scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(part.to_scene))));
+        rounding_mm =
+            std::max(rounding_mm, std::sqrt(3.0) * part.position_step * node_scale * kMetresToMm);
         const import::GltfMaterial* material =
             part.material >= 0 ? &doc.materials[static_cast<std::size_t>(part.material)] : nullptr;
         const std::string reason = stone_reason(part, material);
@@ -354,9 +370,9 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             } else {
                 at.position = centre * kMetresToMm;
             }
-            // The scale as a key, rounded: nodes' rotations written as quaternions leave their
-            // determinants 1 ± 1e-16.
-            const double scale_key = rigid ? std::round(rigid->second * 1e9) : -1.0;
+            // The scale as a key, rounded to float precision: a rotation written as a float
+            // quaternion, or a scale of 0.99999994, is the same stone.
+            const double scale_key = rigid ? std::round(rigid->second * 1e6) : -1.0;
             const auto key = std::make_tuple(part.mesh_index, part.primitive, c, scale_key);
             std::size_t kind = piece.kinds.size();
             if (auto found = shared_kinds.find(key); rigid && found != shared_kinds.end()) {
@@ -364,15 +380,28 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             } else {
                 std::string stone_name = part.mesh.empty() ? part.node : part.mesh;
                 auto stone = stone_from_triangles(corners, local, stone_name, 1e-6,
-                                                  planar_tolerance(stored));
+                                                  planar_tolerance(stored, part.position_step));
                 if (!stone) return fail(who + ": " + stone.error());
                 std::string described;
                 stone.value().material = stone_material(part, material, described);
                 piece.kinds.push_back(std::move(stone).value());
                 if (rigid) shared_kinds[key] = kind;
                 if (log != nullptr) {
+                    std::string shape;
+                    if (!piece.kinds.back().convex) {
+                        shape = "; not convex";
+                        if (part.position_step > 0.0) {
+                            // Quantised corners can blur facets together (docs/gltf.md).
+                            char step[160];
+                            std::snprintf(step, sizeof step,
+                                          " (its corners are quantised to %.2f µm: export them "
+                                          "at 16 bits or as floats to keep its facets)",
+                                          part.position_step * scale * 1000.0);
+                            shape += step;
+                        }
+                    }
                     log->push_back("stone " + who + ": recognised as " + reason + "; " + described +
-                                   (piece.kinds.back().convex ? "" : "; not convex"));
+                                   shape);
                 }
             }
             piece.stones.push_back(
@@ -395,7 +424,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
         log->push_back(std::to_string(doc.images_ignored) +
                        " texture image(s) ignored: a piece is shaded by its materials' factors");
     }
-    if (auto ok = check_piece(piece); !ok) return fail(ok.error());
+    if (auto ok = check_piece(piece, rounding_mm); !ok) return fail(ok.error());
     return piece;
 }
 

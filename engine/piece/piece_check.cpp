@@ -55,7 +55,8 @@ bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const
     return crosses(a, pa, b, pb) || crosses(b, pb, a, pa);
 }
 
-Result<bool> check_piece(const Piece& piece) {
+Result<bool> check_piece(const Piece& piece, double rounding_mm) {
+    const double seat = kSeatMm + rounding_mm, held = kHeldMm + rounding_mm;
     auto name = [&](std::size_t i) {
         return "stone " + std::to_string(i + 1) + " ('" + piece.stones[i].role + "')";
     };
@@ -73,7 +74,7 @@ Result<bool> check_piece(const Piece& piece) {
     for (std::size_t i = 0; i < piece.stones.size(); ++i) {
         const Stone& stone = piece.stone_of(i);
         const Placement& place = piece.stones[i].placement;
-        const double reach = bounding_radius(stone.vertices) + kHeldMm;
+        const double reach = bounding_radius(stone.vertices) + held;
         double nearest = std::numeric_limits<double>::infinity();
         double deepest = 0.0;
         for (const glm::vec3& v : metal.positions) {
@@ -121,15 +122,15 @@ Result<bool> check_piece(const Piece& piece) {
             nearest = std::min(nearest, corner_distance[k]);
             if (corner_inside[k]) deepest = std::max(deepest, corner_distance[k]);
         }
-        if (deepest > kSeatMm + 1e-6) {
+        if (deepest > seat + 1e-6) {
             return Error{"the metal cuts " + std::to_string(deepest) + " mm into " + name(i) +
-                         " (a seat is at most " + std::to_string(kSeatMm) + " mm)"};
+                         " (a seat is at most " + std::to_string(seat) + " mm)"};
         }
-        if (!(nearest <= kHeldMm)) {
+        if (!(nearest <= held)) {
             return Error{name(i) + " floats off its seat: the nearest metal is " +
                          (std::isfinite(nearest) ? std::to_string(nearest) + " mm away"
                                                  : std::string("beyond the stone")) +
-                         " (at most " + std::to_string(kHeldMm) + " mm)"};
+                         " (at most " + std::to_string(held) + " mm)"};
         }
     }
     return true;

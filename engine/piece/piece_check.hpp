@@ -14,7 +14,9 @@ namespace gem {
 // The farthest the metal may stand from a stone that it holds.
 inline constexpr double kHeldMm = 0.1;
 
-Result<bool> check_piece(const Piece& piece);
+// `rounding_mm`: how far the file the piece was read from may have moved its corners (a
+// quantised glTF's step), allowed on top of the seat and the hold.
+Result<bool> check_piece(const Piece& piece, double rounding_mm = 0.0);
 
 // Whether the two placed stones share any volume (their surfaces cross, or one holds the
 // other); stones that only touch do not.

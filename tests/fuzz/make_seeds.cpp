@@ -6,6 +6,7 @@
 // piece the reader accepts), with a transmissive material and without, and damaged copies.
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -15,6 +16,8 @@
 
 #include "../support/glb_writer.hpp"
 #include "optics/material.hpp"
+#include "piece/gltf_piece.hpp"
+#include "piece/gltf_piece_writer.hpp"
 #include "tables/writer.hpp"
 #include "trace/tracer.hpp"
 
@@ -135,7 +138,25 @@ void write_gltf_seeds(const std::filesystem::path& dir) {
     Bytes flipped = valid;
     flipped[valid.size() - 5] = static_cast<char>(flipped[valid.size() - 5] ^ 0x5A);
     write(dir / "buffer_flip.glb", flipped);
-    std::printf("gem_fuzz_seeds: wrote 4 glTF seeds to %s\n", dir.c_str());
+    int seeds = 4;
+    // The same piece as the project writes pieces (normals, the gem extensions), and that
+    // file compressed by meshopt and quantised as web tools do, where gltfpack is installed.
+    auto piece = gem::load_gltf_piece(dir / "valid.glb");
+    if (!piece || !gem::write_piece_glb(piece.value(), dir / "written.glb")) {
+        std::fprintf(stderr, "gem_fuzz_seeds: the seed piece does not read back: %s\n",
+                     piece ? "not written" : piece.error().c_str());
+        std::exit(1);
+    }
+    ++seeds;
+    const std::string packed = (dir / "packed.glb").string();
+    const std::string pack = "gltfpack -c -i '" + (dir / "written.glb").string() + "' -o '" +
+                             packed + "' > /dev/null 2>&1";
+    if (std::system(pack.c_str()) == 0) {
+        ++seeds;
+    } else {
+        std::printf("gem_fuzz_seeds: no meshopt seed (gltfpack did not run)\n");
+    }
+    std::printf("gem_fuzz_seeds: wrote %d glTF seeds to %s\n", seeds, dir.c_str());
 }
 
 }  // namespace

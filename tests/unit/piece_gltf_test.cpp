@@ -254,11 +254,26 @@ TEST(GltfPiece, DamagedAndUnsupportedFilesAreOneMessage) {
     outside.write(far);
     expect_error(far, "reaches outside its buffer");
 
-    Glb packed = good();
-    packed.doc()["extensionsRequired"] = {"EXT_meshopt_compression"};
-    const fs::path meshopt = artifact("meshopt.glb");
-    packed.write(meshopt);
-    expect_error(meshopt, "compressed with EXT_meshopt_compression");
+    Glb draco = good();
+    draco.doc()["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+    const fs::path dracoed = artifact("draco.glb");
+    draco.write(dracoed);
+    expect_error(dracoed, "compressed with KHR_draco_mesh_compression");
+
+    // meshopt data that does not decode (plain floats), and a stride meshopt never writes.
+    for (const auto& [stride, fault] :
+         {std::pair{12, "does not decode"}, std::pair{6, "is not meshopt's"}}) {
+        Glb packed = good();
+        const json view = packed.doc()["bufferViews"][0];
+        packed.doc()["bufferViews"][0]["extensions"]["EXT_meshopt_compression"] = {
+            {"buffer", 0},      {"byteOffset", view["byteOffset"]},
+            {"byteLength", 64}, {"byteStride", stride},
+            {"count", 4},       {"mode", "ATTRIBUTES"}};
+        packed.doc()["extensionsRequired"] = {"EXT_meshopt_compression"};
+        const fs::path meshopt = artifact("meshopt.glb");
+        packed.write(meshopt);
+        expect_error(meshopt, fault);
+    }
 
     Glb cycle = good();
     cycle.doc()["nodes"][0]["children"] = {1};
