@@ -72,29 +72,8 @@ std::vector<std::uint32_t> weld(const std::vector<glm::dvec3>& positions, double
     return representative;
 }
 
-struct UnionFind {
-    std::vector<std::uint32_t> parent;
-    explicit UnionFind(std::size_t n) : parent(n) { std::iota(parent.begin(), parent.end(), 0u); }
-    std::uint32_t find(std::uint32_t a) {
-        while (parent[a] != a) a = parent[a] = parent[parent[a]];
-        return a;
-    }
-    void unite(std::uint32_t a, std::uint32_t b) { parent[find(a)] = find(b); }
-};
-
 glm::dvec3 area_vector(const std::vector<glm::dvec3>& v, const Tri& t) {
     return glm::cross(v[t[1]] - v[t[0]], v[t[2]] - v[t[0]]);
-}
-
-// How well a triangle's corners fix its normal: twice its area over its longest edge squared
-// (its height over its longest edge; near 0 for a sliver).
-double shape_quality(const std::vector<glm::dvec3>& v, const Tri& t) {
-    double longest = 0.0;
-    for (int k = 0; k < 3; ++k) {
-        const glm::dvec3 e = v[t[(k + 1) % 3]] - v[t[k]];
-        longest = std::max(longest, glm::dot(e, e));
-    }
-    return longest > 0.0 ? glm::length(area_vector(v, t)) / longest : 0.0;
 }
 
 // The boundary of a triangle group as one closed loop, or empty when it is not a single
@@ -238,44 +217,64 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
 
     // Merge neighbours whose planes agree: the far vertex of each lies on the other's plane.
     const double planar_tol = planar_tolerance * size;
-    UnionFind groups(tris.size());
+    // Neighbours folded flat onto each other (a non-convex polygon fanned from one corner)
+    // would enclose nothing between them: not a solid's surface.
     for (std::uint32_t t = 0; t < tris.size(); ++t) {
         const glm::dvec3 n = glm::normalize(area_vector(v, tris[t]));
         for (int k = 0; k < 3; ++k) {
-            const std::uint32_t a = tris[t][k], b = tris[t][(k + 1) % 3];
-            const std::uint32_t u = owner.at(edge_key(b, a));
-            if (u < t) continue;
-            const glm::dvec3 m = glm::normalize(area_vector(v, tris[u]));
-            // Neighbours folded flat onto each other (a non-convex polygon fanned from one
-            // corner) would enclose nothing between them: not a solid's surface.
-            if (glm::dot(n, m) < -1.0 + 1e-12) {
+            const std::uint32_t u = owner.at(edge_key(tris[t][(k + 1) % 3], tris[t][k]));
+            if (glm::dot(n, glm::normalize(area_vector(v, tris[u]))) < -1.0 + 1e-12) {
                 return Error{"triangles " + std::to_string(t) + " and " + std::to_string(u) +
                              " fold over each other"};
             }
-            if (glm::dot(n, m) <= 0.0) continue;
-            // They share an edge, so they are coplanar when the far corner of one lies in the
-            // other's plane. The plane is taken from the better-shaped of the two: a sliver's
-            // normal tilts with any rounding of its corners (a girdle facet split corner to
-            // corner), a well-shaped triangle's barely does.
-            const bool t_better = shape_quality(v, tris[t]) >= shape_quality(v, tris[u]);
-            const glm::dvec3& plane = t_better ? n : m;
-            bool coplanar = true;
-            for (std::uint32_t w : tris[t_better ? u : t]) {
-                coplanar = coplanar && std::abs(glm::dot(plane, v[w] - v[a])) <= planar_tol;
-            }
-            if (coplanar) groups.unite(t, u);
         }
     }
-    std::vector<std::uint32_t> group_of(tris.size());
-    std::unordered_map<std::uint32_t, std::uint32_t> group_index;
+    // Facets grown from the largest triangles: a neighbour joins when its corners lie on the
+    // plane of the facet grown so far (its area-weighted normal, which rounding of inner
+    // corners cannot tilt: the sum of a planar polygon's triangles' area vectors is its own).
+    // A single triangle's normal tilts with any rounding of its corners, most of all a
+    // sliver's; a grown facet's barely does, so the tolerance can follow the rounding itself.
+    std::vector<std::uint32_t> order(tris.size());
+    std::iota(order.begin(), order.end(), 0u);
+    std::vector<double> area2(tris.size());
+    for (std::uint32_t t = 0; t < tris.size(); ++t) area2[t] = glm::length(area_vector(v, tris[t]));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::uint32_t a, std::uint32_t b) { return area2[a] > area2[b]; });
+    constexpr std::uint32_t kNone = ~0u;
+    std::vector<std::uint32_t> group_of(tris.size(), kNone);
     std::vector<std::vector<std::uint32_t>> members;
-    for (std::uint32_t t = 0; t < tris.size(); ++t) {
-        auto [it, fresh] = group_index.emplace(groups.find(t), members.size());
-        if (fresh) members.emplace_back();
-        group_of[t] = it->second;
-        members[it->second].push_back(t);
+    for (std::uint32_t seed : order) {
+        if (group_of[seed] != kNone) continue;
+        const auto g = static_cast<std::uint32_t>(members.size());
+        members.push_back({seed});
+        group_of[seed] = g;
+        glm::dvec3 normal_sum(0.0), centroid_sum(0.0);
+        double area_sum = 0.0;
+        const auto take = [&](std::uint32_t t) {
+            normal_sum += area_vector(v, tris[t]);
+            centroid_sum += area2[t] * (v[tris[t][0]] + v[tris[t][1]] + v[tris[t][2]]) / 3.0;
+            area_sum += area2[t];
+        };
+        take(seed);
+        for (std::size_t next = 0; next < members[g].size(); ++next) {
+            const std::uint32_t t = members[g][next];
+            for (int k = 0; k < 3; ++k) {
+                const std::uint32_t u = owner.at(edge_key(tris[t][(k + 1) % 3], tris[t][k]));
+                if (group_of[u] != kNone) continue;
+                const glm::dvec3 n = glm::normalize(normal_sum);
+                const double d = glm::dot(n, centroid_sum / area_sum);
+                if (glm::dot(n, area_vector(v, tris[u])) <= 0.0) continue;
+                bool coplanar = true;
+                for (std::uint32_t w : tris[u]) {
+                    coplanar = coplanar && std::abs(glm::dot(n, v[w]) - d) <= planar_tol;
+                }
+                if (!coplanar) continue;
+                group_of[u] = g;
+                members[g].push_back(u);
+                take(u);
+            }
+        }
     }
-
     // A group whose boundary is not one simple loop cannot be one Facet; its triangles then
     // stay separate facets, which still describe the same surface.
     for (const auto& group : members) {

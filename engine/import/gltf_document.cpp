@@ -19,6 +19,8 @@
 #include <set>
 #include <sstream>
 
+#include <draco/attributes/attribute_quantization_transform.h>
+#include <draco/compression/decode.h>
 #include <meshoptimizer.h>
 #include <glm/gtc/quaternion.hpp>
 #include <glm/gtc/type_ptr.hpp>
@@ -30,13 +32,15 @@ namespace gem::import {
 
 namespace {
 
-// Extensions a file may require that this reader honours: meshopt's compression and GPU
-// instancing, the gem materials (read), the quantised positions (decoded below), and ones
+// Extensions a file may require that this reader honours: Draco's and meshopt's compression,
+// GPU instancing, the gem materials (read), the quantised positions (decoded below), and ones
 // whose absence changes only textures or highlights (ignored).
 const std::set<std::string> kReadable = {
-    "EXT_meshopt_compression",    "EXT_mesh_gpu_instancing", "KHR_materials_ior",
-    "KHR_materials_transmission", "KHR_materials_volume",    "KHR_materials_dispersion",
-    "KHR_mesh_quantization",      "KHR_materials_specular",  "KHR_materials_emissive_strength",
+    "KHR_draco_mesh_compression", "EXT_meshopt_compression",
+    "EXT_mesh_gpu_instancing",    "KHR_materials_ior",
+    "KHR_materials_transmission", "KHR_materials_volume",
+    "KHR_materials_dispersion",   "KHR_mesh_quantization",
+    "KHR_materials_specular",     "KHR_materials_emissive_strength",
     "KHR_texture_transform"};
 
 // The JSON of a .glb (its first chunk) or of a .gltf, for a look at what the file requires
@@ -56,9 +60,10 @@ Result<std::string_view> json_of(std::string_view bytes) {
 }
 
 // The file's JSON checked before the library reads it: every extension it requires is one
-// read here. Returned changed when EXT_meshopt_compression's fallback buffers (which hold no
-// data, as the extension allows) must be given one byte each, since the library would
-// otherwise look for them in the .glb's binary chunk or a file; nothing reads them.
+// read here. Returned changed where the library would refuse what the compression extensions
+// allow: EXT_meshopt_compression's fallback buffers (no data) are given one byte each, since
+// the library would look for them in the .glb's binary chunk or a file (nothing reads them);
+// Draco primitives lose their indices accessor (below).
 Result<std::optional<std::string>> check_json(std::string_view json) {
     nlohmann::json doc = nlohmann::json::parse(json.begin(), json.end(), nullptr, false);
     if (doc.is_discarded() || !doc.is_object()) return Error{"not glTF: its JSON does not parse"};
@@ -68,11 +73,6 @@ Result<std::optional<std::string>> check_json(std::string_view json) {
             if (!name.is_string()) return Error{"extensionsRequired holds a non-string"};
             const std::string n = name.get<std::string>();
             if (kReadable.contains(n)) continue;
-            if (n == "KHR_draco_mesh_compression") {
-                return Error{"its meshes are compressed with " + n +
-                             ", which this reader does not decode; export the piece uncompressed "
-                             "or with meshopt (gltfpack -c)"};
-            }
             return Error{"it requires the extension " + n + ", which this reader does not know"};
         }
     }
@@ -90,6 +90,25 @@ Result<std::optional<std::string>> check_json(std::string_view json) {
             buffer["uri"] = "data:application/octet-stream;base64,AA==";
             buffer["byteLength"] = 1;
             changed = true;
+        }
+    }
+    // A Draco primitive's indices accessor has no buffer view (its faces are in the Draco
+    // data), which the library refuses: the faces are read from Draco, so it is dropped.
+    if (const auto meshes = doc.find("meshes"); meshes != doc.end() && meshes->is_array()) {
+        for (nlohmann::json& mesh : *meshes) {
+            if (!mesh.is_object() || !mesh.contains("primitives") ||
+                !mesh["primitives"].is_array()) {
+                continue;
+            }
+            for (nlohmann::json& primitive : mesh["primitives"]) {
+                if (!primitive.is_object()) continue;
+                const auto ext = primitive.find("extensions");
+                if (ext == primitive.end() || !ext->is_object() ||
+                    !ext->contains("KHR_draco_mesh_compression")) {
+                    continue;
+                }
+                changed = primitive.erase("indices") > 0 || changed;
+            }
         }
     }
     if (!changed) return std::optional<std::string>();
@@ -412,6 +431,81 @@ Result<std::optional<std::vector<glm::dmat4>>> instances_of(const tinygltf::Mode
     return std::optional<std::vector<glm::dmat4>>(std::move(out));
 }
 
+// KHR_draco_mesh_compression: the primitive's positions and triangles decoded from its buffer
+// view by Draco's own decoder. The positions are taken quantised, with the quantisation Draco
+// stored, and dequantised here, so that the part knows its grid's step (the facet tolerance
+// follows it). The file's normals are not read from Draco: a metal part averages its own.
+Result<bool> decode_draco(const tinygltf::Model& model, const tinygltf::Value& ext,
+                          const std::string& what, GltfPart& part) {
+    const double view_index = number(ext, "bufferView", -1.0);
+    if (!(view_index >= 0.0 && view_index < double(model.bufferViews.size()))) {
+        return Error{what + " (Draco): its buffer view does not exist"};
+    }
+    const tinygltf::BufferView& view = model.bufferViews[std::size_t(view_index)];
+    if (view.buffer < 0 || view.buffer >= static_cast<int>(model.buffers.size())) {
+        return Error{what + " (Draco): its buffer does not exist"};
+    }
+    const std::vector<unsigned char>& data = model.buffers[std::size_t(view.buffer)].data;
+    if (view.byteOffset > data.size() || view.byteLength > data.size() - view.byteOffset) {
+        return Error{what + " (Draco): reaches outside its buffer"};
+    }
+    const double position_id = number(ext.Get("attributes"), "POSITION", -1.0);
+    if (!(position_id >= 0.0)) return Error{what + " (Draco): no POSITION"};
+    draco::DecoderBuffer buffer;
+    buffer.Init(reinterpret_cast<const char*>(data.data() + view.byteOffset), view.byteLength);
+    draco::Decoder decoder;
+    decoder.SetSkipAttributeTransform(draco::GeometryAttribute::POSITION);
+    auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
+    if (!decoded.ok()) {
+        return Error{what + " (Draco): does not decode: " + decoded.status().error_msg_string()};
+    }
+    const draco::Mesh& mesh = *decoded.value();
+    const draco::PointAttribute* positions =
+        mesh.GetAttributeByUniqueId(static_cast<std::uint32_t>(position_id));
+    if (positions == nullptr || positions->num_components() != 3) {
+        return Error{what + " (Draco): its POSITION is not three numbers a point"};
+    }
+    part.positions.resize(mesh.num_points());
+    draco::AttributeQuantizationTransform quantised;
+    if (quantised.InitFromAttribute(*positions)) {
+        const int bits = quantised.quantization_bits();
+        if (bits < 1 || bits > 30) return Error{what + " (Draco): a quantisation out of range"};
+        const double step = quantised.range() / (std::ldexp(1.0, bits) - 1.0);
+        part.position_step = step;
+        for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+            std::int32_t q[3];
+            if (!positions->ConvertValue<std::int32_t, 3>(positions->mapped_index(i), q)) {
+                return Error{what + " (Draco): a position does not decode"};
+            }
+            for (int c = 0; c < 3; ++c) {
+                part.positions[i.value()][c] = quantised.min_value(c) + q[c] * step;
+            }
+        }
+    } else {
+        for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
+            float f[3];
+            if (!positions->ConvertValue<float, 3>(positions->mapped_index(i), f)) {
+                return Error{what + " (Draco): a position does not decode"};
+            }
+            part.positions[i.value()] = {f[0], f[1], f[2]};
+        }
+    }
+    for (const glm::dvec3& p : part.positions) {
+        if (!all_finite(p)) return Error{what + " (Draco): a position that is not a number"};
+    }
+    part.triangles.resize(mesh.num_faces());
+    for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f) {
+        const draco::Mesh::Face& face = mesh.face(f);
+        for (int c = 0; c < 3; ++c) {
+            if (face[c].value() >= mesh.num_points()) {
+                return Error{what + " (Draco): an index past its positions"};
+            }
+            part.triangles[f.value()][c] = face[c].value();
+        }
+    }
+    return true;
+}
+
 Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
                          const glm::dmat4& to_scene) {
     const tinygltf::Mesh& mesh = model.meshes[model.nodes[node].mesh];
@@ -421,10 +515,9 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
     if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
         return Error{what + ": not triangles (mode " + std::to_string(p.mode) + ")"};
     }
-    const auto position = p.attributes.find("POSITION");
-    if (position == p.attributes.end()) return Error{what + ": no POSITION"};
-    auto xyz = read_accessor(model, position->second, 3, what + " positions");
-    if (!xyz) return Error{xyz.error()};
+    if (p.material >= static_cast<int>(model.materials.size())) {
+        return Error{what + ": material " + std::to_string(p.material) + " does not exist"};
+    }
     GltfPart part;
     part.node = model.nodes[node].name;
     part.mesh = mesh.name;
@@ -432,6 +525,15 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
     part.primitive = primitive;
     part.material = p.material;
     part.to_scene = to_scene;
+    if (const auto draco = p.extensions.find("KHR_draco_mesh_compression");
+        draco != p.extensions.end()) {
+        if (auto ok = decode_draco(model, draco->second, what, part); !ok) return Error{ok.error()};
+        return part;
+    }
+    const auto position = p.attributes.find("POSITION");
+    if (position == p.attributes.end()) return Error{what + ": no POSITION"};
+    auto xyz = read_accessor(model, position->second, 3, what + " positions");
+    if (!xyz) return Error{xyz.error()};
     const tinygltf::Accessor& stored = model.accessors[position->second];
     if (stored.componentType != TINYGLTF_COMPONENT_TYPE_FLOAT) {
         // Quantised positions (KHR_mesh_quantization): one step of the integer, decoded.
@@ -479,9 +581,6 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
             }
             part.triangles[t][c] = static_cast<std::uint32_t>(i);
         }
-    }
-    if (p.material >= static_cast<int>(model.materials.size())) {
-        return Error{what + ": material " + std::to_string(p.material) + " does not exist"};
     }
     return part;
 }

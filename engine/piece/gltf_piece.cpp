@@ -195,21 +195,18 @@ std::vector<std::vector<std::array<std::uint32_t, 3>>> connected_pieces(
     return pieces;
 }
 
-// The coplanarity tolerance, relative to the stone's size, for its float32 positions as the
-// file stores them, up to `far` from the file's origin: their rounding (2^-24 of the
-// coordinate) tilts facets' triangles (the better-shaped of two neighbours gives the plane,
-// stone_from_triangles). Measured (GltfPiece.FacetsSurvive...): a 1.5 mm brilliant stored in
-// metres 1 mm from the origin keeps its 89 facets from 5 times that rounding over far / size
-// (not at 2); 20 is used. Real facets differ by a degree or more, so even a stone 20 sizes from
-// the origin (2.4e-5) keeps them apart. Never below the default.
-//
-// Quantised positions (KHR_mesh_quantization) are rounded to a grid of `step`: kQuantisedSteps
-// of it. Measured on the halo written here and re-packed by gltfpack (its positions one grid
-// over the whole 24.5 mm ring): at 16 bits (0.4 µm) both stones keep their 89 facets from 2
-// steps; at 14 bits (1.5 µm, gltfpack's default) the 5.8 mm centre needs 4, and the 1.3 mm
-// melee's 26 µm girdle merges into its neighbours at any tolerance that joins its split
-// facets: it is drawn as the non-convex mesh it has become (docs/gltf.md).
-constexpr double kQuantisedSteps = 4.0;
+// The coplanarity tolerance, relative to the stone's size, for its corners as the file stores
+// them (stone_from_triangles grows each facet against the plane of what it has grown so far,
+// which rounding barely tilts, so the tolerance follows the rounding itself):
+// - float32, up to `far` from the file's origin: rounding of 2^-24 of the coordinate.
+//   Measured (GltfPiece.FacetsSurvive...): a 1.5 mm brilliant stored in metres up to 30 mm
+//   from the origin keeps its 89 facets from 1 times that rounding over far / size; 4 is used.
+// - quantised (KHR_mesh_quantization, Draco): a grid of `step`. Measured on the halo written
+//   here and re-packed by gltfpack at 14 bits (its default: one 1.5 µm grid over the 24.5 mm
+//   ring), the 1.3 mm melee keeps its 89 facets from 3 steps to 7 (86 at 8, 44 at 16); 5 is
+//   used. Draco at 11 and 14 bits keeps them too (GltfPiece.DracoCompressed...).
+// Real facets differ by a degree or more. Never below the default.
+constexpr double kQuantisedSteps = 5.0;
 
 double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
     double far = 0.0;
@@ -223,7 +220,7 @@ double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
     if (!(size > 0.0)) return kPlanarRelative;
     constexpr double kFloatRounding = 1.0 / (1 << 24);
     return std::max(
-        {kPlanarRelative, 20.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
+        {kPlanarRelative, 4.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
 }
 
 // The node's transform as a rotation and a uniform scale, when it is one (no mirror, no

@@ -44,6 +44,14 @@ class Glb {
         return i;
     }
     json& doc() { return doc_; }
+    // Raw bytes appended to the buffer as a view of their own (compressed data); its index.
+    int view(const std::string& data) {
+        while (bin_.size() % 4 != 0) bin_.push_back('\0');
+        doc_["bufferViews"].push_back(
+            {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", data.size()}});
+        bin_ += data;
+        return static_cast<int>(doc_["bufferViews"].size()) - 1;
+    }
 
     void write(const std::filesystem::path& path) const {
         json doc = doc_;
@@ -78,11 +86,7 @@ class Glb {
         return bytes_of(f);
     }
     int accessor(const std::string& data, int component, const char* type, std::size_t count) {
-        while (bin_.size() % 4 != 0) bin_.push_back('\0');
-        doc_["bufferViews"].push_back(
-            {{"buffer", 0}, {"byteOffset", bin_.size()}, {"byteLength", data.size()}});
-        bin_ += data;
-        doc_["accessors"].push_back({{"bufferView", doc_["bufferViews"].size() - 1},
+        doc_["accessors"].push_back({{"bufferView", view(data)},
                                      {"componentType", component},
                                      {"type", type},
                                      {"count", count}});
