@@ -306,4 +306,88 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
     return stone;
 }
 
+Result<Stone> stone_closed_by_its_planes(const std::vector<glm::dvec3>& positions,
+                                         const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                         std::string name, double planar_tolerance) {
+    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
+    for (const glm::dvec3& p : positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const double size = glm::length(hi - lo);
+    if (!(size > 0.0)) return Error{"mesh has no extent"};
+    const double tol = planar_tolerance * size;
+    // The triangles' planes, largest first, each joining the first plane it lies in: within
+    // the tolerance at its own corners (which fixes both the normal and the offset).
+    std::vector<std::uint32_t> order;
+    for (std::uint32_t t = 0; t < triangles.size(); ++t) {
+        const auto& tri = triangles[t];
+        if (tri[0] >= positions.size() || tri[1] >= positions.size() || tri[2] >= positions.size())
+            return Error{"a triangle refers past the vertices"};
+        order.push_back(t);
+    }
+    const auto area = [&](std::uint32_t t) {
+        const auto& c = triangles[t];
+        return glm::cross(positions[c[1]] - positions[c[0]], positions[c[2]] - positions[c[0]]);
+    };
+    std::stable_sort(order.begin(), order.end(), [&](std::uint32_t a, std::uint32_t b) {
+        return glm::length(area(a)) > glm::length(area(b));
+    });
+    struct Cluster {
+        glm::dvec3 normal_sum{0.0}, centroid_sum{0.0};
+        double weight = 0.0;
+        Plane plane() const {
+            Plane p;
+            p.n = glm::normalize(normal_sum);
+            p.d = glm::dot(p.n, centroid_sum / weight);
+            return p;
+        }
+    };
+    std::vector<Cluster> clusters;
+    for (std::uint32_t t : order) {
+        const glm::dvec3 a = area(t);
+        const double w = glm::length(a);
+        if (!(w > 0.0)) continue;
+        const auto& c = triangles[t];
+        Cluster* home = nullptr;
+        for (Cluster& k : clusters) {
+            const Plane p = k.plane();
+            if (glm::dot(p.n, a) <= 0.0) continue;
+            bool in = true;
+            for (std::uint32_t v : c) in = in && std::abs(p.signed_distance(positions[v])) <= tol;
+            if (in) {
+                home = &k;
+                break;
+            }
+        }
+        if (home == nullptr) home = &clusters.emplace_back();
+        home->normal_sum += a;
+        home->centroid_sum += w * (positions[c[0]] + positions[c[1]] + positions[c[2]]) / 3.0;
+        home->weight += w;
+    }
+    // Nearly convex: every corner inside every plane, within the tolerance.
+    std::vector<FacetPlane> planes;
+    for (const Cluster& k : clusters) {
+        const Plane p = k.plane();
+        for (const glm::dvec3& v : positions) {
+            if (p.signed_distance(v) > tol) {
+                return Error{"not convex, so its missing faces cannot be told from its planes"};
+            }
+        }
+        planes.push_back({p, FacetKind::other, ""});
+    }
+    auto closed = stone_from_planes(planes, std::move(name));
+    if (!closed) return Error{closed.error()};
+    // A whole facet lost leaves no plane for it: the planes then close the stone somewhere it
+    // never reached (a point above a missing table). Every corner must be one the mesh had.
+    for (const glm::dvec3& corner : closed.value().vertices) {
+        double nearest = HUGE_VAL;
+        for (const glm::dvec3& p : positions) nearest = std::min(nearest, glm::length(corner - p));
+        if (nearest > tol) {
+            return Error{"a whole facet is missing, so its planes would change its shape"};
+        }
+    }
+    return closed;
+}
+
 }  // namespace gem

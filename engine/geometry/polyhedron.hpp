@@ -2,6 +2,8 @@
 // Building closed solids: a convex stone as the intersection of half-spaces, and a stone from
 // a closed triangle mesh (coplanar neighbours merged into facets, convexity detected).
 
+#include <array>
+#include <cstdint>
 #include <string>
 #include <vector>
 
@@ -34,6 +36,14 @@ Result<Stone> stone_from_triangles(const std::vector<glm::dvec3>& positions,
                                    const std::vector<std::array<std::uint32_t, 3>>& triangles,
                                    std::string name, double weld_tolerance = 1e-9,
                                    double planar_tolerance = kPlanarRelative);
+
+// A convex stone whose mesh is not closed (an export that lost a few triangles): the planes of
+// the triangles it has, merged within `planar_tolerance` of its size, intersected. An error when
+// a corner lies outside any plane (not convex: what is missing cannot be told), and when a
+// whole facet is missing (the planes left would close the stone with a corner it never had).
+Result<Stone> stone_closed_by_its_planes(const std::vector<glm::dvec3>& positions,
+                                         const std::vector<std::array<std::uint32_t, 3>>& triangles,
+                                         std::string name, double planar_tolerance);
 
 // Triangulates every facet loop (ear clipping, so non-convex facets work) into stone.triangles.
 void triangulate_facets(Stone& stone);

@@ -376,8 +376,21 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                 kind = found->second;
             } else {
                 std::string stone_name = part.mesh.empty() ? part.node : part.mesh;
-                auto stone = stone_from_triangles(corners, local, stone_name, 1e-6,
-                                                  planar_tolerance(stored, part.position_step));
+                const double tolerance = planar_tolerance(stored, part.position_step);
+                auto stone = stone_from_triangles(corners, local, stone_name, 1e-6, tolerance);
+                std::string closed;
+                if (!stone && stone.error().starts_with("mesh is open")) {
+                    // An export that lost a few triangles of a convex stone: closed by the
+                    // planes of the facets it kept, said in the log.
+                    auto whole = stone_closed_by_its_planes(corners, local, stone_name, tolerance);
+                    if (!whole) {
+                        return fail(who + ": " + stone.error() + ", and " + whole.error());
+                    }
+                    const std::string& why = stone.error();  // "mesh is open: N boundary edges"
+                    closed = "; open (" + why.substr(why.find(": ") + 2) +
+                             "): closed by the planes of its facets";
+                    stone = std::move(whole);
+                }
                 if (!stone) return fail(who + ": " + stone.error());
                 std::string described;
                 stone.value().material = stone_material(part, material, described);
@@ -398,7 +411,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                         }
                     }
                     log->push_back("stone " + who + ": recognised as " + reason + "; " + described +
-                                   shape);
+                                   shape + closed);
                 }
             }
             piece.stones.push_back(

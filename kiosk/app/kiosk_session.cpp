@@ -85,6 +85,7 @@ Result<bool> KioskSession::configure() {
                  std::to_string(startup.value().stones.size()) + " stones from " +
                  startup.value().directory.string());
         for (const std::string& why : startup.value().left_out) log_error(why);
+        for (const std::string& note : startup.value().notes) log_info(note);
         selection_->set_catalogue(startup.value());
         catalogue_ = std::move(startup).value();
     } else {
@@ -251,6 +252,7 @@ void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
                std::to_string(catalogue.stones.size()) + " stones) from " +
                catalogue.directory.string());
     for (const std::string& why : catalogue.left_out) log_error(why);
+    for (const std::string& note : catalogue.notes) log_info(note);
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
     }

@@ -72,6 +72,9 @@ struct Catalogue {
     // Stones validation left out (a design that cannot be read), one message each; the rest
     // of the catalogue is shown.
     std::vector<std::string> left_out;
+    // What validation found worth saying of the stones kept: how a glTF piece's stones were
+    // recognised and what they are made of, a line each.
+    std::vector<std::string> notes;
 };
 
 }  // namespace gem::kiosk

@@ -48,11 +48,15 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
             // A piece that cannot be read (a missing stone file, stones that intersect, a
             // setting parameter out of range: piece/piece_file.hpp names the file and key)
             // leaves its entry out, not the catalogue.
-            Result<Piece> placed = load_piece(stone.piece);
+            std::vector<std::string> recognised;  // a glTF piece says how it found its stones
+            Result<Piece> placed = load_piece(stone.piece, &recognised);
             if (!placed) {
                 catalogue.left_out.push_back("piece '" + stone.name + "' left out: " +
                                              relative_message(placed.error(), stone.piece, real));
                 continue;
+            }
+            for (const std::string& line : recognised) {
+                catalogue.notes.push_back("piece '" + stone.name + "': " + line);
             }
             stone.placed = std::make_shared<const Piece>(std::move(placed).value());
         } else if (!stone.design.empty()) {

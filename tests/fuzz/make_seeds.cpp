@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/draco_mesh.hpp"
 #include "../support/glb_writer.hpp"
 #include "optics/material.hpp"
 #include "piece/gltf_piece.hpp"
@@ -148,6 +149,21 @@ void write_gltf_seeds(const std::filesystem::path& dir) {
         std::exit(1);
     }
     ++seeds;
+    // Its stone compressed with Draco at 14 bits, as web exports come.
+    {
+        const gem::Stone s = octahedron();
+        gem::test_support::Glb glb;
+        std::vector<glm::dvec3> corners;
+        for (const glm::dvec3& v : s.vertices) {
+            corners.push_back((v + glm::dvec3(0, 1.5, 0)) / 1000.0);
+        }
+        std::vector<std::array<std::uint32_t, 3>> triangles;
+        for (const gem::MeshTriangle& t : s.triangles) triangles.push_back(t.v);
+        const int mesh = gem::test_support::draco_mesh(glb, "stone", corners, triangles, -1, 14);
+        glb.node({{"name", "Diamond_1"}, {"mesh", mesh}});
+        glb.write(dir / "draco.glb");
+        ++seeds;
+    }
     const std::string packed = (dir / "packed.glb").string();
     const std::string pack = "gltfpack -c -i '" + (dir / "written.glb").string() + "' -o '" +
                              packed + "' > /dev/null 2>&1";

@@ -334,15 +334,20 @@ TEST(GltfPiece, DamagedAndUnsupportedFilesAreOneMessage) {
     cycle.write(loop);
     expect_error(loop, "reached twice");
 
+    // A gem that lost a whole facet (its table) cannot be closed by its other facets' planes:
+    // they would meet above it. (One lost triangle is closed: CatalogueValidate.Gltf...)
     Glb open;
-    auto tris = triangles(s);
-    tris.pop_back();
+    std::vector<std::array<std::uint32_t, 3>> tris;
+    for (const MeshTriangle& t : s.triangles) {
+        if (s.facets[t.facet].kind != FacetKind::table) tris.push_back(t.v);
+    }
     open.node(
         {{"name", "Diamond"}, {"mesh", open.mesh("d", metres(s, {0, -culet_y(s), 0}), tris, -1)}});
     add_plate(open, 0.0, -1);
     const fs::path holed = artifact("open.glb");
     open.write(holed);
     expect_error(holed, "node 'Diamond'");
+    expect_error(holed, "a whole facet is missing");
 
     Glb bare;
     add_plate(bare, 0.0, -1);
