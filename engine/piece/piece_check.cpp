@@ -71,6 +71,17 @@ Result<bool> check_piece(const Piece& piece, double rounding_mm) {
     // Each stone against the metal near it: the nearest metal must touch it, and nothing may
     // cut deeper than a seat, neither metal into the stone nor the stone into the metal.
     const MetalMesh& metal = piece.metal;
+    // Each metal triangle's centre and reach, once in the piece's frame: a stone then skips
+    // the triangles far from it without taking them into its own frame.
+    std::vector<glm::dvec4> spheres(metal.indices.size() / 3);
+    for (std::size_t t = 0; t < spheres.size(); ++t) {
+        const glm::dvec3 a(metal.positions[metal.indices[3 * t]]);
+        const glm::dvec3 b(metal.positions[metal.indices[3 * t + 1]]);
+        const glm::dvec3 c(metal.positions[metal.indices[3 * t + 2]]);
+        const glm::dvec3 mid = (a + b + c) / 3.0;
+        spheres[t] = glm::dvec4(
+            mid, std::max({glm::length(a - mid), glm::length(b - mid), glm::length(c - mid)}));
+    }
     for (std::size_t i = 0; i < piece.stones.size(); ++i) {
         const Stone& stone = piece.stone_of(i);
         const Placement& place = piece.stones[i].placement;
@@ -78,8 +89,9 @@ Result<bool> check_piece(const Piece& piece, double rounding_mm) {
         double nearest = std::numeric_limits<double>::infinity();
         double deepest = 0.0;
         for (const glm::vec3& v : metal.positions) {
+            // A placement is rigid: the distance from the stone's centre is frame-free.
+            if (glm::length(glm::dvec3(v) - place.position) > reach) continue;
             const glm::dvec3 p = place.to_stone(glm::dvec3(v));
-            if (glm::length(p) > reach) continue;
             const double d = signed_distance(stone, p);
             nearest = std::min(nearest, d);
             deepest = std::max(deepest, -d);
@@ -92,6 +104,8 @@ Result<bool> check_piece(const Piece& piece, double rounding_mm) {
                                             std::numeric_limits<double>::infinity());
         std::vector<char> corner_inside(stone.vertices.size(), 0);
         for (std::size_t t = 0; t + 2 < metal.indices.size(); t += 3) {
+            const glm::dvec4& sphere = spheres[t / 3];
+            if (glm::length(glm::dvec3(sphere) - place.position) > reach + sphere.w) continue;
             const glm::dvec3 a = place.to_stone(glm::dvec3(metal.positions[metal.indices[t]]));
             const glm::dvec3 b = place.to_stone(glm::dvec3(metal.positions[metal.indices[t + 1]]));
             const glm::dvec3 c = place.to_stone(glm::dvec3(metal.positions[metal.indices[t + 2]]));
