@@ -25,7 +25,7 @@ int main(int argc, char** argv) {
     fs::create_directories(dir);
     // The eternity band with 1.1 mm stones: 56 of them round the finger.
     const fs::path toml = dir / "band50.toml";
-    std::ofstream(toml) << "[piece]\nname = \"Fifty-stone band\"\nsetting = \"band\"\n"
+    std::ofstream(toml) << "[piece]\nname = \"Band of 1.1 mm stones\"\nsetting = \"band\"\n"
                         << "metal = \"platinum\"\nfinger_diameter_mm = 17.3\n"
                         << "band_thickness_mm = 1.4\n\n[small]\nstone = \""
                         << (fs::path(GEM_CONFIG_DIR) / "stones" / "melee-diamond.toml").string()
