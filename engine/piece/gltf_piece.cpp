@@ -295,11 +295,15 @@ void add_metal(const import::GltfPart& part, const import::GltfMaterial* m, Meta
 Result<Piece> load_gltf_piece(const std::filesystem::path& path, std::vector<std::string>* log) {
     Result<std::string> bytes = import::read_whole_file(path);
     if (!bytes) return Error{bytes.error()};
-    return parse_gltf_piece(bytes.value(), path.string(), path.parent_path(), log);
+    auto manifest = load_gltf_manifest(path);
+    if (!manifest) return Error{manifest.error()};
+    const GltfManifest* beside = manifest.value() ? &*manifest.value() : nullptr;
+    return parse_gltf_piece(bytes.value(), path.string(), path.parent_path(), log, beside);
 }
 
 Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
-                               const std::filesystem::path& base, std::vector<std::string>* log) {
+                               const std::filesystem::path& base, std::vector<std::string>* log,
+                               const GltfManifest* manifest) {
     auto read = import::parse_gltf(bytes, name, base);
     if (!read) return Error{read.error()};
     const import::GltfDocument& doc = read.value();
@@ -318,7 +322,17 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             std::max(rounding_mm, std::sqrt(3.0) * part.position_step * node_scale * kMetresToMm);
         const import::GltfMaterial* material =
             part.material >= 0 ? &doc.materials[static_cast<std::size_t>(part.material)] : nullptr;
-        const std::string reason = stone_reason(part, material);
+        // The manifest beside the file wins over the file's materials and names.
+        const std::vector<std::string> names = {part.node, part.mesh,
+                                                material ? material->name : std::string()};
+        const GltfManifest::Stone* listed = manifest ? manifest->stone_named(names) : nullptr;
+        std::string reason;
+        if (listed != nullptr) {
+            reason = "the manifest " + manifest->file.filename().string() + " names it '" +
+                     listed->name + "'";
+        } else if (manifest == nullptr || !manifest->metal_named(names)) {
+            reason = stone_reason(part, material);
+        }
         if (reason.empty()) {
             add_metal(part, material, piece.metal, first_metal, log);
             continue;
@@ -393,7 +407,12 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                 }
                 if (!stone) return fail(who + ": " + stone.error());
                 std::string described;
-                stone.value().material = stone_material(part, material, described);
+                if (listed != nullptr && listed->material) {
+                    stone.value().material = *listed->material;
+                    described = listed->material->name + " (the manifest)";
+                } else {
+                    stone.value().material = stone_material(part, material, described);
+                }
                 piece.kinds.push_back(std::move(stone).value());
                 if (rigid) shared_kinds[key] = kind;
                 if (log != nullptr) {

@@ -5,7 +5,8 @@
 //
 // A part is a stone when its material is transmissive (KHR_materials_transmission), when it
 // carries a gem extension (KHR_materials_ior, _volume, _dispersion), or when its node's, mesh's
-// or material's name holds a gem word (kGemWords: "Diamond_12", "Gem 01", "dia045"); each stone
+// or material's name holds a gem word (kGemWords: "Diamond_12", "Gem 01", "dia045"), unless a
+// manifest beside the file says otherwise (gltf_manifest.hpp); each stone
 // says in the log how it was recognised. A part holding several stones (stones merged into one
 // mesh) is split into its connected pieces. Every other part is metal, shaded by its
 // metallic-roughness factors (F0 mixed from 0.04 to the base colour by the metalness).
@@ -23,6 +24,7 @@
 #include <string_view>
 #include <vector>
 
+#include "piece/gltf_manifest.hpp"
 #include "piece/piece.hpp"
 #include "util/result.hpp"
 
@@ -33,13 +35,15 @@ namespace gem {
 extern const std::vector<std::string> kGemWords;
 
 // `log`, if given, receives one line per stone kind (how it was recognised and its material)
-// and one for ignored textures.
+// and one for ignored textures. A manifest beside the file (gltf_manifest.hpp) is read and
+// wins over the file's materials and names.
 Result<Piece> load_gltf_piece(const std::filesystem::path& path,
                               std::vector<std::string>* log = nullptr);
 // The same from the file's bytes; `name` stands for the file in messages (and names the
 // piece), `base` is where a .gltf's buffers are looked for.
 Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                                const std::filesystem::path& base,
-                               std::vector<std::string>* log = nullptr);
+                               std::vector<std::string>* log = nullptr,
+                               const GltfManifest* manifest = nullptr);
 
 }  // namespace gem

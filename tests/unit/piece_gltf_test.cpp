@@ -267,6 +267,52 @@ TEST(GltfPiece, DracoCompressedStonesComeBackWithTheirFacets) {
     }
 }
 
+// A manifest beside the file (RING.glb.toml) wins over the file's materials and names: it makes
+// a part named without a gem word a ruby, and keeps a part whose name says "diamond" metal.
+// Without it the same file is read by its names (the plate named a diamond is taken for the
+// stone, the brilliant for metal); a bad manifest line is named by file, line and key.
+TEST(GltfPiece, AManifestBesideTheFileWinsOverItsNames) {
+    const Stone s = brilliant(1.5);
+    Glb glb;
+    glb.node({{"name", "Body_012"},
+              {"mesh", glb.mesh("Body_012", metres(s, {0, -culet_y(s), 0}), triangles(s), -1)}});
+    add_plate(glb, 0.0, -1);
+    glb.doc()["nodes"][1]["name"] = "Diamond setting";
+    const fs::path file = artifact("manifest.glb");
+    glb.write(file);
+    fs::path manifest = file;
+    manifest += ".toml";
+    fs::remove(manifest);
+    auto by_names = load_piece(file);
+    ASSERT_TRUE(by_names) << by_names.error();
+    ASSERT_EQ(by_names.value().stones.size(), 1u);
+    EXPECT_NE(by_names.value().stones[0].role.find("Diamond setting"), std::string::npos);
+    EXPECT_EQ(by_names.value().kinds[0].facets.size(), 6u);  // the plate, taken for a stone
+
+    std::ofstream(manifest) << "[[stone]]\nname = \"Body_012\"\nmaterial = \"ruby\"\n\n"
+                            << "[[metal]]\nname = \"Diamond setting\"\n";
+    std::vector<std::string> log;
+    auto read = load_gltf_piece(file, &log);
+    ASSERT_TRUE(read) << read.error();
+    ASSERT_EQ(read.value().stones.size(), 1u);
+    EXPECT_EQ(read.value().kinds[0].material.name, "ruby");
+    EXPECT_EQ(read.value().kinds[0].facets.size(), s.facets.size());
+    ASSERT_EQ(log.size(), 1u);
+    EXPECT_NE(
+        log[0].find("the manifest manifest.glb.toml names it 'Body_012'; ruby (the manifest)"),
+        std::string::npos)
+        << log[0];
+
+    std::ofstream(manifest) << "[[stone]]\nname = \"Body_012\"\nmaterial = \"kryptonite\"\n";
+    auto bad = load_piece(file);
+    ASSERT_FALSE(bad);
+    EXPECT_NE(bad.error().find("manifest.glb.toml:3: stone.material: 'kryptonite' is not a "
+                               "built-in material"),
+              std::string::npos)
+        << bad.error();
+    fs::remove(manifest);
+}
+
 // One message each, naming the file and the fault.
 TEST(GltfPiece, DamagedAndUnsupportedFilesAreOneMessage) {
     const Stone s = brilliant(1.5);
