@@ -379,11 +379,13 @@ Result<Stone> stone_closed_by_its_planes(const std::vector<glm::dvec3>& position
     auto closed = stone_from_planes(planes, std::move(name));
     if (!closed) return Error{closed.error()};
     // A whole facet lost leaves no plane for it: the planes then close the stone somewhere it
-    // never reached (a point above a missing table). Every corner must be one the mesh had.
+    // never reached (a point above a missing table). Every corner must be one the mesh had,
+    // within what intersecting fitted planes at shallow angles may move it.
+    const double moved = std::max(10.0 * tol, 1e-3 * size);
     for (const glm::dvec3& corner : closed.value().vertices) {
         double nearest = HUGE_VAL;
         for (const glm::dvec3& p : positions) nearest = std::min(nearest, glm::length(corner - p));
-        if (nearest > tol) {
+        if (nearest > moved) {
             return Error{"a whole facet is missing, so its planes would change its shape"};
         }
     }

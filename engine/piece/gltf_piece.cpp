@@ -203,8 +203,8 @@ std::vector<std::vector<std::array<std::uint32_t, 3>>> connected_pieces(
 //   from the origin keeps its 89 facets from 1 times that rounding over far / size; 4 is used.
 // - quantised (KHR_mesh_quantization, Draco): a grid of `step`. Measured on the halo written
 //   here and re-packed by gltfpack at 14 bits (its default: one 1.5 µm grid over the 24.5 mm
-//   ring), the 1.3 mm melee keeps its 89 facets from 3 steps to 7 (86 at 8, 44 at 16); 5 is
-//   used. Draco at 11 and 14 bits keeps them too (GltfPiece.DracoCompressed...).
+//   ring), the 1.3 mm melee keeps its 89 facets at 3 and 5 steps (91 at 2; merged to 86 at 8,
+//   44 at 16); 5 is used. Draco at 11 and 14 bits keeps them too (GltfPiece.DracoCompressed...).
 // Real facets differ by a degree or more. Never below the default.
 constexpr double kQuantisedSteps = 5.0;
 

@@ -14,6 +14,7 @@
 
 #include <sys/wait.h>
 
+#include "../support/piece_corners.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
@@ -33,20 +34,7 @@ Piece round_trip(const Piece& piece) {
     return read ? std::move(read).value() : Piece{};
 }
 
-// The farthest any corner of stone `i` lies from the nearest corner of the same stone in `b`,
-// both in the piece's frame (mm).
-double corner_gap(const Piece& a, const Piece& b, std::size_t i) {
-    double worst = 0.0;
-    for (const glm::dvec3& v : a.stone_of(i).vertices) {
-        const glm::dvec3 p = a.stones[i].placement.to_piece(v);
-        double nearest = HUGE_VAL;
-        for (const glm::dvec3& w : b.stone_of(i).vertices) {
-            nearest = std::min(nearest, glm::length(p - b.stones[i].placement.to_piece(w)));
-        }
-        worst = std::max(worst, nearest);
-    }
-    return worst;
-}
+using test_support::corner_gap;
 
 class RoundTrip : public testing::TestWithParam<const char*> {};
 

@@ -10,6 +10,7 @@
 #include <filesystem>
 #include <string>
 
+#include "../support/piece_corners.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
@@ -27,20 +28,7 @@ struct Packing {
 
 class Gltfpack : public testing::TestWithParam<Packing> {};
 
-// The farthest any corner of stone `i` of `a` lies from the nearest corner of stone `i` of
-// `b`, in the piece's frame.
-double corner_gap(const Piece& a, const Piece& b, std::size_t i) {
-    double worst = 0.0;
-    for (const glm::dvec3& v : a.stone_of(i).vertices) {
-        const glm::dvec3 p = a.stones[i].placement.to_piece(v);
-        double nearest = HUGE_VAL;
-        for (const glm::dvec3& w : b.stone_of(i).vertices) {
-            nearest = std::min(nearest, glm::length(p - b.stones[i].placement.to_piece(w)));
-        }
-        worst = std::max(worst, nearest);
-    }
-    return worst;
-}
+using test_support::corner_gap;
 
 TEST_P(Gltfpack, TheHaloComesBackAsItsStones) {
     if (std::system("command -v gltfpack > /dev/null 2>&1") != 0) {
