@@ -3,7 +3,7 @@
 // (cgltf and fastgltf read the gem extensions typed, but Debian 12 packages neither). Its
 // implementation is compiled into this file rather than linked from Debian's libtinygltf2d, so
 // that images are never decoded (a piece shades by its material factors; textures are counted
-// and ignored) and so that its Draco decoder can be enabled here when Draco is read.
+// and ignored). Writing is gltf_write.cpp; the compressed meshes' codecs gltf_compression.cpp.
 #define TINYGLTF_IMPLEMENTATION
 #define TINYGLTF_NO_STB_IMAGE
 #define TINYGLTF_NO_STB_IMAGE_WRITE
@@ -15,17 +15,12 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
-#include <map>
 #include <set>
-#include <sstream>
 
-#include <draco/attributes/attribute_quantization_transform.h>
-#include <draco/compression/decode.h>
-#include <meshoptimizer.h>
 #include <glm/gtc/quaternion.hpp>
-#include <glm/gtc/type_ptr.hpp>
 #include <nlohmann/json.hpp>
 
+#include "import/gltf_compression.hpp"
 #include "import/import_text.hpp"
 
 namespace gem::import {
@@ -170,9 +165,8 @@ std::string text(const tinygltf::Value& object, const char* key, const std::stri
     return v.IsString() ? v.Get<std::string>() : fallback;
 }
 
-// EXT_meshopt_compression: each compressed buffer view decoded (meshoptimizer, the extension's
-// own decoder) into a buffer of its own, which the view then reads plainly. The parameters are
-// checked first: the decoder asserts on ones its format cannot have.
+// EXT_meshopt_compression: each compressed buffer view decoded (gltf_compression.hpp) into a
+// buffer of its own, which the view then reads plainly.
 Result<bool> decode_meshopt(tinygltf::Model& model) {
     for (std::size_t i = 0; i < model.bufferViews.size(); ++i) {
         tinygltf::BufferView& view = model.bufferViews[i];
@@ -191,37 +185,14 @@ Result<bool> decode_meshopt(tinygltf::Model& model) {
         if (!(offset >= 0.0 && length >= 0.0 && offset + length <= double(source.size()))) {
             return Error{what + ": reaches outside its buffer"};
         }
-        if (!(count >= 0.0 && stride >= 1.0 && stride <= 256.0 && count * stride <= 1 << 30)) {
-            return Error{what + ": a count or stride out of range"};
+        if (!(count >= 0.0 && count <= 4294967295.0 && stride >= 0.0 && stride <= 4294967295.0)) {
+            return Error{what + ": a count or stride out of range"};  // before the casts below
         }
-        const auto n = std::size_t(count), size = std::size_t(stride);
-        const bool index_size = size == 2 || size == 4;
-        std::vector<unsigned char> out(n * size);
-        const unsigned char* from = source.data() + std::size_t(offset);
-        int status = -1;
-        if (mode == "ATTRIBUTES" && size % 4 == 0) {
-            status = meshopt_decodeVertexBuffer(out.data(), n, size, from, std::size_t(length));
-        } else if (mode == "TRIANGLES" && index_size && n % 3 == 0) {
-            status = meshopt_decodeIndexBuffer(out.data(), n, size, from, std::size_t(length));
-        } else if (mode == "INDICES" && index_size) {
-            status = meshopt_decodeIndexSequence(out.data(), n, size, from, std::size_t(length));
-        } else {
-            return Error{what + ": mode '" + mode + "' with a stride of " + std::to_string(size) +
-                         " is not meshopt's"};
-        }
-        if (status != 0) return Error{what + ": its data does not decode"};
-        if (filter == "OCTAHEDRAL" && (size == 4 || size == 8)) {
-            meshopt_decodeFilterOct(out.data(), n, size);
-        } else if (filter == "QUATERNION" && size == 8) {
-            meshopt_decodeFilterQuat(out.data(), n, size);
-        } else if (filter == "EXPONENTIAL" && size % 4 == 0) {
-            meshopt_decodeFilterExp(out.data(), n, size);
-        } else if (filter != "NONE") {
-            return Error{what + ": filter '" + filter + "' with a stride of " +
-                         std::to_string(size) + " is not meshopt's"};
-        }
+        auto out = decode_meshopt_view(source.data() + std::size_t(offset), std::size_t(length),
+                                       std::size_t(count), std::size_t(stride), mode, filter);
+        if (!out) return Error{what + ": " + out.error()};
         tinygltf::Buffer decoded;
-        decoded.data = std::move(out);
+        decoded.data = std::move(out).value();
         model.buffers.push_back(std::move(decoded));
         view.buffer = static_cast<int>(model.buffers.size()) - 1;
         view.byteOffset = 0;
@@ -432,9 +403,8 @@ Result<std::optional<std::vector<glm::dmat4>>> instances_of(const tinygltf::Mode
 }
 
 // KHR_draco_mesh_compression: the primitive's positions and triangles decoded from its buffer
-// view by Draco's own decoder. The positions are taken quantised, with the quantisation Draco
-// stored, and dequantised here, so that the part knows its grid's step (the facet tolerance
-// follows it). The file's normals are not read from Draco: a metal part averages its own.
+// view (gltf_compression.hpp), with the grid its positions were quantised to. The file's
+// normals are not read from Draco: a metal part averages its own.
 Result<bool> decode_draco(const tinygltf::Model& model, const tinygltf::Value& ext,
                           const std::string& what, GltfPart& part) {
     const double view_index = number(ext, "bufferView", -1.0);
@@ -451,57 +421,14 @@ Result<bool> decode_draco(const tinygltf::Model& model, const tinygltf::Value& e
     }
     const double position_id = number(ext.Get("attributes"), "POSITION", -1.0);
     if (!(position_id >= 0.0)) return Error{what + " (Draco): no POSITION"};
-    draco::DecoderBuffer buffer;
-    buffer.Init(reinterpret_cast<const char*>(data.data() + view.byteOffset), view.byteLength);
-    draco::Decoder decoder;
-    decoder.SetSkipAttributeTransform(draco::GeometryAttribute::POSITION);
-    auto decoded = decoder.DecodeMeshFromBuffer(&buffer);
-    if (!decoded.ok()) {
-        return Error{what + " (Draco): does not decode: " + decoded.status().error_msg_string()};
-    }
-    const draco::Mesh& mesh = *decoded.value();
-    const draco::PointAttribute* positions =
-        mesh.GetAttributeByUniqueId(static_cast<std::uint32_t>(position_id));
-    if (positions == nullptr || positions->num_components() != 3) {
-        return Error{what + " (Draco): its POSITION is not three numbers a point"};
-    }
-    part.positions.resize(mesh.num_points());
-    draco::AttributeQuantizationTransform quantised;
-    if (quantised.InitFromAttribute(*positions)) {
-        const int bits = quantised.quantization_bits();
-        if (bits < 1 || bits > 30) return Error{what + " (Draco): a quantisation out of range"};
-        const double step = quantised.range() / (std::ldexp(1.0, bits) - 1.0);
-        part.position_step = step;
-        for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
-            std::int32_t q[3];
-            if (!positions->ConvertValue<std::int32_t, 3>(positions->mapped_index(i), q)) {
-                return Error{what + " (Draco): a position does not decode"};
-            }
-            for (int c = 0; c < 3; ++c) {
-                part.positions[i.value()][c] = quantised.min_value(c) + q[c] * step;
-            }
-        }
-    } else {
-        for (draco::PointIndex i(0); i < mesh.num_points(); ++i) {
-            float f[3];
-            if (!positions->ConvertValue<float, 3>(positions->mapped_index(i), f)) {
-                return Error{what + " (Draco): a position does not decode"};
-            }
-            part.positions[i.value()] = {f[0], f[1], f[2]};
-        }
-    }
+    auto mesh = decode_draco_mesh(data.data() + view.byteOffset, view.byteLength,
+                                  static_cast<std::uint32_t>(position_id));
+    if (!mesh) return Error{what + " (Draco): " + mesh.error()};
+    part.positions = std::move(mesh.value().positions);
+    part.triangles = std::move(mesh.value().triangles);
+    part.position_step = mesh.value().position_step;
     for (const glm::dvec3& p : part.positions) {
         if (!all_finite(p)) return Error{what + " (Draco): a position that is not a number"};
-    }
-    part.triangles.resize(mesh.num_faces());
-    for (draco::FaceIndex f(0); f < mesh.num_faces(); ++f) {
-        const draco::Mesh::Face& face = mesh.face(f);
-        for (int c = 0; c < 3; ++c) {
-            if (face[c].value() >= mesh.num_points()) {
-                return Error{what + " (Draco): an index past its positions"};
-            }
-            part.triangles[f.value()][c] = face[c].value();
-        }
     }
     return true;
 }
@@ -587,176 +514,19 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
 
 }  // namespace
 
-namespace {
-
-// Appends `values` to the buffer as one view and one accessor of `type`; returns the accessor.
-template <typename T>
-int add_accessor(tinygltf::Model& model, const std::vector<T>& values, int components,
-                 int component_type, int type, int target) {
-    tinygltf::Buffer& buffer = model.buffers[0];
-    tinygltf::BufferView view;
-    view.buffer = 0;
-    view.byteOffset = buffer.data.size();
-    view.byteLength = values.size() * sizeof(T);
-    view.target = target;
-    const auto* bytes = reinterpret_cast<const unsigned char*>(values.data());
-    buffer.data.insert(buffer.data.end(), bytes, bytes + view.byteLength);
-    model.bufferViews.push_back(view);
-    tinygltf::Accessor accessor;
-    accessor.bufferView = static_cast<int>(model.bufferViews.size()) - 1;
-    accessor.componentType = component_type;
-    accessor.type = type;
-    accessor.count = values.size() / static_cast<std::size_t>(components);
-    if (type == TINYGLTF_TYPE_VEC3) {  // positions need their bounds; normals may have them
-        accessor.minValues.assign(3, HUGE_VAL);
-        accessor.maxValues.assign(3, -HUGE_VAL);
-        for (std::size_t i = 0; i < values.size(); ++i) {
-            accessor.minValues[i % 3] = std::min(accessor.minValues[i % 3], double(values[i]));
-            accessor.maxValues[i % 3] = std::max(accessor.maxValues[i % 3], double(values[i]));
-        }
-    }
-    model.accessors.push_back(accessor);
-    return static_cast<int>(model.accessors.size()) - 1;
-}
-
-std::vector<float> floats_of(const std::vector<glm::dvec3>& v) {
-    std::vector<float> out;
-    out.reserve(3 * v.size());
-    for (const glm::dvec3& p : v) out.insert(out.end(), {float(p.x), float(p.y), float(p.z)});
-    return out;
-}
-
-tinygltf::Value object_of(std::initializer_list<std::pair<const char*, tinygltf::Value>> kv) {
-    tinygltf::Value::Object o;
-    for (const auto& [k, v] : kv) o[k] = v;
-    return tinygltf::Value(std::move(o));
-}
-
-tinygltf::Value colour_value(const glm::dvec3& c) {
-    return tinygltf::Value(
-        tinygltf::Value::Array{tinygltf::Value(c.x), tinygltf::Value(c.y), tinygltf::Value(c.z)});
-}
-
-tinygltf::Material material_for_file(const GltfMaterial& m, std::set<std::string>& used) {
-    tinygltf::Material out;
-    out.name = m.name;
-    out.pbrMetallicRoughness.baseColorFactor = {m.base_colour.x, m.base_colour.y, m.base_colour.z,
-                                                1.0};
-    out.pbrMetallicRoughness.metallicFactor = m.metallic;
-    out.pbrMetallicRoughness.roughnessFactor = m.roughness;
-    const auto add = [&](const char* name, tinygltf::Value value) {
-        out.extensions[name] = std::move(value);
-        used.insert(name);
-    };
-    if (m.transmission > 0.0) {
-        add("KHR_materials_transmission",
-            object_of({{"transmissionFactor", tinygltf::Value(m.transmission)}}));
-    }
-    if (m.ior) add("KHR_materials_ior", object_of({{"ior", tinygltf::Value(*m.ior)}}));
-    if (m.thickness_m > 0.0) {
-        tinygltf::Value::Object volume;
-        volume["thicknessFactor"] = tinygltf::Value(m.thickness_m);
-        if (std::isfinite(m.attenuation_distance_m)) {
-            volume["attenuationDistance"] = tinygltf::Value(m.attenuation_distance_m);
-            volume["attenuationColor"] = colour_value(m.attenuation_colour);
-        }
-        add("KHR_materials_volume", tinygltf::Value(std::move(volume)));
-    }
-    if (m.dispersion) {
-        add("KHR_materials_dispersion",
-            object_of({{"dispersion", tinygltf::Value(*m.dispersion)}}));
-    }
-    return out;
-}
-
-// A node's transform as glTF's translation, rotation and scale when it is a rotation and one
-// positive scale; else its matrix.
-void set_transform(tinygltf::Node& node, const glm::dmat4& m) {
+std::optional<std::pair<glm::dmat3, double>> rotation_and_scale(const glm::dmat4& m) {
     const glm::dmat3 a(m);
     const double det = glm::determinant(a);
-    const double s = det > 0.0 ? std::cbrt(det) : 0.0;
-    const glm::dmat3 r = s > 0.0 ? a / s : a;
+    if (!(det > 0.0)) return std::nullopt;
+    const double s = std::cbrt(det);
+    const glm::dmat3 r = a / s;
     const glm::dmat3 e = glm::transpose(r) * r - glm::dmat3(1.0);
-    bool rigid = s > 0.0;
-    for (int i = 0; i < 9; ++i) rigid = rigid && std::abs(e[i / 3][i % 3]) < 1e-9;
-    if (!rigid) {
-        node.matrix.assign(glm::value_ptr(m), glm::value_ptr(m) + 16);
-        return;
-    }
-    const glm::dquat q = glm::normalize(glm::quat_cast(r));
-    if (m[3] != glm::dvec4(0, 0, 0, 1)) node.translation = {m[3].x, m[3].y, m[3].z};
-    if (std::abs(q.w) < 1.0 - 1e-15) node.rotation = {q.x, q.y, q.z, q.w};
-    if (std::abs(s - 1.0) > 1e-15) node.scale = {s, s, s};
-}
-
-}  // namespace
-
-Result<std::string> glb_bytes(const GltfDocument& doc, const std::string& generator) {
-    tinygltf::Model model;
-    model.asset.version = "2.0";
-    model.asset.generator = generator;
-    model.buffers.emplace_back();
-    std::set<std::string> used;
-    for (const GltfMaterial& m : doc.materials) {
-        model.materials.push_back(material_for_file(m, used));
-    }
-    model.extensionsUsed.assign(used.begin(), used.end());
-    std::map<int, int> mesh_of;  // the document's mesh_index → the file's mesh
-    model.scenes.emplace_back();
-    for (const GltfPart& part : doc.parts) {
-        if (part.material >= static_cast<int>(doc.materials.size())) {
-            return Error{"part '" + part.node + "' names a material that does not exist"};
+    for (int i = 0; i < 3; ++i) {
+        for (int j = 0; j < 3; ++j) {
+            if (std::abs(e[i][j]) > 1e-6) return std::nullopt;
         }
-        auto [it, fresh] = mesh_of.try_emplace(part.mesh_index, int(model.meshes.size()));
-        if (fresh) {
-            tinygltf::Primitive primitive;
-            primitive.mode = TINYGLTF_MODE_TRIANGLES;
-            primitive.material = part.material;
-            primitive.attributes["POSITION"] =
-                add_accessor(model, floats_of(part.positions), 3, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                             TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
-            if (!part.normals.empty()) {
-                if (part.normals.size() != part.positions.size()) {
-                    return Error{"part '" + part.node +
-                                 "' has normals and positions that differ in count"};
-                }
-                primitive.attributes["NORMAL"] =
-                    add_accessor(model, floats_of(part.normals), 3, TINYGLTF_COMPONENT_TYPE_FLOAT,
-                                 TINYGLTF_TYPE_VEC3, TINYGLTF_TARGET_ARRAY_BUFFER);
-            }
-            std::vector<std::uint32_t> indices;
-            indices.reserve(3 * part.triangles.size());
-            for (const auto& t : part.triangles) {
-                for (std::uint32_t c : t) {
-                    if (c >= part.positions.size()) {
-                        return Error{"part '" + part.node + "' has an index past its positions"};
-                    }
-                    indices.push_back(c);
-                }
-            }
-            primitive.indices =
-                add_accessor(model, indices, 1, TINYGLTF_COMPONENT_TYPE_UNSIGNED_INT,
-                             TINYGLTF_TYPE_SCALAR, TINYGLTF_TARGET_ELEMENT_ARRAY_BUFFER);
-            tinygltf::Mesh mesh;
-            mesh.name = part.mesh;
-            mesh.primitives.push_back(std::move(primitive));
-            model.meshes.push_back(std::move(mesh));
-        }
-        tinygltf::Node node;
-        node.name = part.node;
-        node.mesh = it->second;
-        set_transform(node, part.to_scene);
-        model.scenes[0].nodes.push_back(static_cast<int>(model.nodes.size()));
-        model.nodes.push_back(std::move(node));
     }
-    model.buffers[0].data.resize((model.buffers[0].data.size() + 3) / 4 * 4, 0);
-    model.defaultScene = 0;
-    std::ostringstream out;
-    tinygltf::TinyGLTF writer;
-    if (!writer.WriteGltfSceneToStream(&model, out, false, true)) {
-        return Error{"the glTF library could not write the piece"};
-    }
-    return out.str();
+    return std::make_pair(r, s);
 }
 
 Result<GltfDocument> read_gltf(const std::filesystem::path& path) {

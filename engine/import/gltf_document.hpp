@@ -2,17 +2,17 @@
 // A glTF 2.0 file (.glb, or .gltf with its buffers) read into plain parts: every mesh primitive
 // placed in the scene (its triangles in the mesh's own frame and the node's transform to the
 // scene, glTF's metres, +y up) and the materials it names, with the Khronos gem extensions
-// (KHR_materials_ior, _transmission, _volume, _dispersion) read. The one file that uses the
-// glTF library (Debian's tinygltf 2.7, compiled in: gltf_document.cpp says why); what a piece
-// makes of the parts is piece/gltf_piece.hpp.
+// (KHR_materials_ior, _transmission, _volume, _dispersion) read. This header is the whole of
+// the glTF library (Debian's tinygltf 2.7, compiled in: gltf_document.cpp says why) that the
+// rest of the project sees: gltf_document.cpp reads, gltf_write.cpp writes, and
+// gltf_compression.cpp decodes Draco and meshopt meshes. What a piece makes of the parts is
+// piece/gltf_piece.hpp.
 //
 // Refused with one message naming the file and the fault: a file that is not glTF, a truncated
-// .glb, an accessor reaching outside its buffer, a primitive that is not triangles, a node tree
-// with a cycle, an extension the file requires that is not read here (Draco). Meshes compressed
-// with EXT_meshopt_compression are decoded (meshoptimizer), and EXT_mesh_gpu_instancing's
-// instances are parts of their own.
-//
-// glb_bytes writes a document as a .glb, with the same library.
+// .glb, an accessor or compressed data reaching outside its buffer or not decoding, a
+// primitive that is not triangles, a node tree with a cycle, a position, normal or transform
+// that is not a number, an extension the file requires that is not read here.
+// EXT_mesh_gpu_instancing's instances are parts of their own.
 
 #include <array>
 #include <cstdint>
@@ -21,6 +21,7 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <utility>
 #include <vector>
 
 #include <glm/glm.hpp>
@@ -71,6 +72,11 @@ struct GltfDocument {
 // (KHR_materials_transmission where transmissive, _ior, _dispersion, and _volume where it has
 // a thickness). `generator` goes into the file's asset.
 Result<std::string> glb_bytes(const GltfDocument& doc, const std::string& generator);
+
+// A node's transform as a rotation and one positive scale, when it is one (no mirror, no uneven
+// scale, within 1e-6): what a placed stone's node must be to stay its mesh's kind, and what
+// the writer writes as translation, rotation and scale.
+std::optional<std::pair<glm::dmat3, double>> rotation_and_scale(const glm::dmat4& m);
 
 Result<GltfDocument> read_gltf(const std::filesystem::path& path);
 // The same from the file's bytes: `name` stands for the file in messages, `base` is where a

@@ -223,23 +223,6 @@ double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
         {kPlanarRelative, 4.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
 }
 
-// The node's transform as a rotation and a uniform scale, when it is one (no mirror, no
-// uneven scale).
-std::optional<std::pair<glm::dmat3, double>> rotation_and_scale(const glm::dmat4& m) {
-    const glm::dmat3 a(m);
-    const double det = glm::determinant(a);
-    if (!(det > 0.0)) return std::nullopt;
-    const double s = std::cbrt(det);
-    const glm::dmat3 r = a / s;
-    const glm::dmat3 e = glm::transpose(r) * r - glm::dmat3(1.0);
-    for (int i = 0; i < 3; ++i) {
-        for (int j = 0; j < 3; ++j) {
-            if (std::abs(e[i][j]) > 1e-6) return std::nullopt;
-        }
-    }
-    return std::make_pair(r, s);
-}
-
 void add_metal(const import::GltfPart& part, const import::GltfMaterial* m, MetalMesh& metal,
                bool& first_metal, std::vector<std::string>* log) {
     const glm::dmat4& to = part.to_scene;
@@ -340,7 +323,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
         const std::string who = "node '" + part.node + "' (mesh '" + part.mesh + "')";
         std::vector<std::uint32_t> weld;
         const auto pieces = connected_pieces(part.positions, part.triangles, weld);
-        const auto rigid = rotation_and_scale(part.to_scene);
+        const auto rigid = import::rotation_and_scale(part.to_scene);
         for (std::size_t c = 0; c < pieces.size(); ++c) {
             const auto& tris = pieces[c];
             if (tris.size() > kMaxStoneTriangles) {

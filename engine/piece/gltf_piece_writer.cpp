@@ -101,8 +101,20 @@ Result<std::string> piece_glb(const Piece& piece) {
         kind_parts[k].material = static_cast<int>(k) + 1;
         stone_mesh(piece.kinds[k], kind_parts[k]);
     }
+    // A kind's mesh data goes with its first stone; the others name the same mesh.
+    std::vector<bool> written(piece.kinds.size(), false);
     for (const PieceStone& s : piece.stones) {
-        import::GltfPart part = kind_parts[s.kind];
+        import::GltfPart& kind = kind_parts[s.kind];
+        import::GltfPart part;
+        part.mesh_index = kind.mesh_index;
+        part.material = kind.material;
+        if (!written[s.kind]) {
+            part.mesh = kind.mesh;
+            part.positions = std::move(kind.positions);
+            part.normals = std::move(kind.normals);
+            part.triangles = std::move(kind.triangles);
+            written[s.kind] = true;
+        }
         part.node = s.role;
         glm::dmat4 to(s.placement.rotation);
         to[3] = glm::dvec4(s.placement.position * kMmToMetres, 1.0);
