@@ -173,8 +173,9 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingFile);
     app.add_flag("--blend", o.gpu.blend, "table: blend the two nearest stored views");
     app.add_option("--fire", o.gpu.fire,
-                   "trace: dispersion none, first (first order, as tables) or exact (per channel)")
-        ->check(CLI::IsMember({"none", "first", "exact"}));
+                   "trace: dispersion none, first (first order, as tables), exact (per channel) "
+                   "or spectral (each still frame its own wavelengths; exact while moving)")
+        ->check(CLI::IsMember({"none", "first", "exact", "spectral"}));
     app.add_option("--ring", o.gpu.ring, "GPU: 'parametric' or a ring OBJ in the stone frame");
     app.add_option("--metal", o.gpu.metal, "ring metal: yellow_gold, white_gold, platinum, silver");
     app.add_option("--frames", o.gpu.frames, "GPU: a turntable of N frames, timed")

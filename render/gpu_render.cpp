@@ -102,9 +102,10 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     setup.shading = settings.shading;
     setup.trace = settings.trace;
     setup.table.blend = o.blend;
-    setup.trace_dispersion = o.fire == "first"   ? gpu::TraceDispersion::first_order
-                             : o.fire == "exact" ? gpu::TraceDispersion::exact
-                                                 : gpu::TraceDispersion::none;
+    setup.trace_dispersion = o.fire == "first"      ? gpu::TraceDispersion::first_order
+                             : o.fire == "exact"    ? gpu::TraceDispersion::exact
+                             : o.fire == "spectral" ? gpu::TraceDispersion::spectral
+                                                    : gpu::TraceDispersion::none;
     setup.table.wait_for_views = o.frames == 1;
     auto environment = build_environment(scene);
     if (!environment) return fail(environment.error());
@@ -150,7 +151,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
                                      {.samples = o.msaa,
                                       .display = o.display,
                                       .glare = o.glare,
-                                      .still_frames = o.still_frames});
+                                      .still_frames = o.still_frames,
+                                      .spectral = o.fire == "spectral"});
     if (!hdr) return fail(hdr.error());
     std::printf("gemrender: picture %s\n", hdr.value().describe().c_str());
 
@@ -182,7 +184,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
             auto moved = Camera::make(jittered, framing_mm, scene.width, scene.height);
             if (!moved) return Error{moved.error()};
             hdr.value().bind();
-            auto drawn = r.render(moved.value(), gpu::FrameWait::none);
+            auto drawn = r.render(moved.value(), gpu::FrameWait::none, hdr.value().spectrum());
             if (!drawn) return drawn;
             auto finished = hdr.value().finish(target.value());
             if (!finished) return Error{finished.error()};

@@ -137,7 +137,8 @@ Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
     return update_ring_cube();
 }
 
-Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
+Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
+                                         const FrameSpectrum* spectrum) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     FrameStats stats;
@@ -180,6 +181,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait) {
         frame.environment = &seen;
         frame.cube_half_mm = cube_half_mm_;
         frame.scene_radius_mm = scene_radius_mm_;
+        frame.spectrum = spectrum;
     }
     // The stones' depth first (where the method has that pass), then the metal, then the
     // stones: each is shaded only where it is seen. Stones shaded before the metal cost every

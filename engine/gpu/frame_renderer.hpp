@@ -33,7 +33,10 @@ class FrameRenderer {
     ~FrameRenderer();
 
     // Draws into the bound framebuffer (viewport set), waiting for the GPU as `wait` says.
-    Result<FrameStats> render(const Camera& camera, FrameWait wait);
+    // `spectrum`: the wavelengths of this frame of a still view (HdrPicture::spectrum()), for
+    // spectral fire; null while the view moves.
+    Result<FrameStats> render(const Camera& camera, FrameWait wait,
+                              const FrameSpectrum* spectrum = nullptr);
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 

@@ -88,6 +88,9 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         p.mean_ = make_texture_2d(GL_RGBA16F, width, height, GL_NEAREST);
         p.mean_framebuffer_ = make_framebuffer_with(p.mean_.get());
         if (!complete()) return Error{"picture: the still view's mean cannot be rendered"};
+        if (options.spectral) {
+            p.spectrum_.emplace(options.still_frames);
+        }
     }
     if (p.high_range_ && options.glare > 0.0) {
         auto glare = BloomPass::make(width, height);
@@ -106,6 +109,11 @@ void HdrPicture::begin_frame(bool still) {
         return;
     }
     still_index_ = std::min(still_index_ + 1, options_.still_frames);
+}
+
+const FrameSpectrum* HdrPicture::spectrum() const {
+    if (!spectrum_ || still_index_ < 0 || still_index_ >= options_.still_frames) return nullptr;
+    return &spectrum_->frame(still_index_);
 }
 
 bool HdrPicture::settled() const {
@@ -199,15 +207,15 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
 
 std::string HdrPicture::describe() const {
     char line[200];
-    std::snprintf(line, sizeof line, "%s, %d× MSAA, %d frames a still view, %s, %s at %+.1f EV",
-                  high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)",
-                  samples_, accumulate_ ? options_.still_frames : 1,
-                  glare_ && options_.glare > 0.0
-                      ? ("glare " + std::to_string(options_.glare).substr(0, 4) + " over " +
-                         std::to_string(glare_->levels()) + " levels")
-                            .c_str()
-                      : "no glare",
-                  to_string(options_.display.curve), options_.display.exposure_ev);
+    std::snprintf(
+        line, sizeof line, "%s, %d× MSAA, %d frames a still view%s, %s, %s at %+.1f EV",
+        high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
+        accumulate_ ? options_.still_frames : 1, spectrum_ ? ", each its own wavelengths" : "",
+        glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
+                                          " over " + std::to_string(glare_->levels()) + " levels")
+                                             .c_str()
+                                       : "no glare",
+        to_string(options_.display.curve), options_.display.exposure_ev);
     return line;
 }
 

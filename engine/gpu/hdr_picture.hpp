@@ -14,6 +14,10 @@
 // Halton (2, 3) sequence), so edges inside the stone, where the rays' paths through it change,
 // are sampled several times a pixel as the CPU reference samples them. Any motion restarts
 // the mean; after `still_frames` frames more drawing changes nothing (settled()).
+//
+// With spectral fire (PictureOptions::spectral) each still frame also traces its own
+// wavelengths, one per colour channel (spectrum(), optics/spectrum.hpp: StillSpectrum), so
+// that the mean of a still view's frames is each channel's spectral integral.
 
 #include <optional>
 
@@ -24,6 +28,7 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
 #include "gpu/render_target.hpp"
+#include "optics/spectrum.hpp"
 #include "render/tone_map.hpp"
 #include "util/result.hpp"
 
@@ -34,6 +39,9 @@ struct PictureOptions {
     DisplayTransform display;  // exposure and tone curve
     double glare = 0.04;       // share of the picture spread into glare; 0: none
     int still_frames = 16;     // frames averaged while the view is still; 1: none
+    // Spectral fire: each still frame traces its own wavelengths, one per channel (spectrum());
+    // needs still_frames > 1.
+    bool spectral = false;
 };
 
 // Each pass's time, measured with glFinish between passes (only when asked: it stalls).
@@ -52,6 +60,9 @@ class HdrPicture {
     // frame should be moved by jitter_ndc() (CameraSettings::shift).
     void begin_frame(bool still);
     glm::dvec2 jitter_ndc() const;
+    // The wavelengths this frame traces (FrameRenderer::render): a still frame's, when the
+    // picture is spectral; else null.
+    const FrameSpectrum* spectrum() const;
     // The still view has its still_frames frames: drawing it again changes nothing.
     bool settled() const;
     // The picture is as good as this view gets: settled, or no averaging at all.
@@ -88,6 +99,7 @@ class HdrPicture {
     Texture mean_;  // the still view's running mean (RGBA16F)
     Framebuffer mean_framebuffer_;
     int still_index_ = -1;  // this frame's place in the still view's mean; -1: moving
+    std::optional<StillSpectrum> spectrum_;
     std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;
     Program finish_;

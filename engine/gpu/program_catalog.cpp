@@ -6,7 +6,8 @@ namespace gem::gpu {
 
 std::vector<ProgramSpec> all_program_specs() {
     constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
-    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
+    constexpr std::uint32_t kTraceFeatures =
+        kShadingFeatures | kFireFirstOrder | kFireExact | kFireSpectral;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -28,12 +29,12 @@ std::vector<ProgramSpec> all_program_specs() {
          {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {},
          kTraceFeatures},
-        // Its shading only: a non-convex stone's fire is not traced per channel.
+        // A non-convex stone's fire is traced per wavelength in a still view only.
         {"trace_non_convex",
          {"stone.vert"},
          {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"},
-         kShadingFeatures},
+         kShadingFeatures | kFireSpectral},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).

@@ -27,8 +27,8 @@ std::vector<StoneModel> cheaper_models(const StoneModel& configured) {
     std::vector<StoneModel> out;
     // Fire from least to most work, up to the configured.
     const auto add_with_fire = [&](int depth) {
-        for (TraceDispersion fire :
-             {TraceDispersion::none, TraceDispersion::first_order, TraceDispersion::exact}) {
+        for (TraceDispersion fire : {TraceDispersion::none, TraceDispersion::first_order,
+                                     TraceDispersion::exact, TraceDispersion::spectral}) {
             out.push_back({depth, fire});
             if (fire == configured.fire) break;
         }

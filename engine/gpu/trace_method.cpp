@@ -102,16 +102,37 @@ std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch se
     return ProgramVariants("trace", {});
 }
 
-std::uint32_t fire_features(TraceDispersion dispersion) {
+// The fire a draw compiles in: a non-convex stone traces fire only with a frame's wavelengths
+// (trace.frag), and spectral fire without them is exact.
+std::uint32_t fire_features(TraceDispersion dispersion, bool convex, bool has_spectrum) {
+    if (dispersion == TraceDispersion::spectral && has_spectrum) return kFireSpectral;
+    if (!convex) return 0;
     switch (dispersion) {
         case TraceDispersion::none:
             return 0;
         case TraceDispersion::first_order:
             return kFireFirstOrder;
         case TraceDispersion::exact:
+        case TraceDispersion::spectral:
             return kFireExact;
     }
     return 0;
+}
+
+// trace.frag's FIRE_SPECTRAL uniforms: the frame's wavelengths as the material's indices at
+// them, and their weights.
+void set_wavelength_uniforms(const Program& p, const FrameSpectrum& spectrum,
+                             const Material& material) {
+    float ior[kMaxWavelengthsPerFrame] = {};
+    glm::vec3 weight[kMaxWavelengthsPerFrame] = {};
+    for (int k = 0; k < spectrum.count; ++k) {
+        const SpectralSample& s = spectrum.samples[static_cast<std::size_t>(k)];
+        ior[k] = static_cast<float>(material.index(s.wavelength_nm));
+        weight[k] = glm::vec3(s.rgb_weight);
+    }
+    p.set("u_wavelength_count", spectrum.count);
+    p.set("u_wavelength_ior", ior, kMaxWavelengthsPerFrame);
+    p.set("u_wavelength_weight", weight, kMaxWavelengthsPerFrame);
 }
 
 }  // namespace
@@ -124,6 +145,8 @@ const char* to_string(TraceDispersion fire) {
             return "first-order";
         case TraceDispersion::exact:
             return "exact";
+        case TraceDispersion::spectral:
+            return "spectral";
     }
     return "?";
 }
@@ -236,9 +259,8 @@ std::string TraceMethod::measurement() const {
 Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& trace,
                                TraceDispersion dispersion) {
     assert(frame.environment != nullptr);
-    // A non-convex stone's branches are traced at one index (trace.frag).
     const std::uint32_t features =
-        shading_features(frame) | (convex_ ? fire_features(dispersion) : 0u);
+        shading_features(frame) | fire_features(dispersion, convex_, frame.spectrum != nullptr);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -254,6 +276,8 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     p.set("u_r_factor", static_cast<float>(trace.r_factor));
     p.set("u_t_factor", static_cast<float>(trace.t_factor));
     p.set("u_ior_channel", channel_indices(frame.material));
+    if ((features & kFireSpectral) != 0)
+        set_wavelength_uniforms(p, *frame.spectrum, frame.material);
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");

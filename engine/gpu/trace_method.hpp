@@ -29,8 +29,13 @@ enum class TraceDispersion {
     none,         // one index, n(D)
     first_order,  // exit directions moved by their derivative with respect to n, per channel
     exact,        // each colour channel traced at its own index (three times the work)
+    // A still view's frames each trace their own wavelengths at their own indices
+    // (StoneFrame::spectrum, optics/spectrum.hpp: StillSpectrum), so the still picture
+    // converges to the spectral integral; a frame without them (the view moving) is drawn
+    // with exact fire. A non-convex stone traces no fire while moving.
+    spectral,
 };
-// "none", "first-order", "exact": for logs and benchmark tables.
+// "none", "first-order", "exact", "spectral": for logs and benchmark tables.
 const char* to_string(TraceDispersion fire);
 
 // How a convex stone's exits are found.

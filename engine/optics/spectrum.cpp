@@ -31,6 +31,44 @@ glm::dvec3 integrate_linear_srgb(double from_nm, double to_nm) {
     return sum * step;
 }
 
+// Where the cumulative positive part of one linear-sRGB colour matching function over the
+// visible range reaches `share` of its whole, by the same 1 nm midpoint steps, linear inside
+// a step.
+class ChannelScale {
+  public:
+    explicit ChannelScale(int channel) {
+        const int steps =
+            static_cast<int>(std::ceil((kSpectrumMaxNm - kSpectrumMinNm) / kIntegrationStepNm));
+        step_ = (kSpectrumMaxNm - kSpectrumMinNm) / steps;
+        cumulative_.push_back(0.0);
+        for (int i = 0; i < steps; ++i) {
+            const glm::dvec3 rgb =
+                xyz_to_linear_srgb(cie1931_xyz(kSpectrumMinNm + (i + 0.5) * step_));
+            cumulative_.push_back(cumulative_.back() + std::max(rgb[channel], 0.0) * step_);
+        }
+    }
+    double wavelength_at(double share) const {
+        const double mass = share * cumulative_.back();
+        const auto above = std::upper_bound(cumulative_.begin(), cumulative_.end(), mass);
+        const auto i = static_cast<std::size_t>(std::clamp<std::ptrdiff_t>(
+            above - cumulative_.begin(), 1, static_cast<std::ptrdiff_t>(cumulative_.size()) - 1));
+        const double inside =
+            (mass - cumulative_[i - 1]) / std::max(cumulative_[i] - cumulative_[i - 1], 1e-300);
+        return kSpectrumMinNm + (static_cast<double>(i - 1) + std::clamp(inside, 0.0, 1.0)) * step_;
+    }
+
+  private:
+    double step_ = 1.0;
+    std::vector<double> cumulative_;
+};
+
+// The base-2 radical inverse of i (van der Corput): 0, 1/2, 1/4, 3/4, 1/8, ...
+double radical_inverse(unsigned i) {
+    double f = 0.5, r = 0.0;
+    for (; i > 0; i >>= 1, f *= 0.5) r += f * (i & 1u);
+    return r;
+}
+
 }  // namespace
 
 glm::dvec3 cie1931_xyz(double wavelength_nm) {
@@ -59,6 +97,30 @@ SpectralSamples spectral_samples(int count, double jitter) {
     // is a white balance to illuminant E, which keeps grey objects grey.
     for (SpectralSample& s : out.samples) s.rgb_weight /= total;
     return out;
+}
+
+StillSpectrum::StillSpectrum(int frames) {
+    assert(frames >= 1);
+    // The frames ranked by the radical inverse of their index: frame f samples stratum
+    // rank[f] of each channel.
+    std::vector<int> by_inverse(static_cast<std::size_t>(frames));
+    for (int f = 0; f < frames; ++f) by_inverse[static_cast<std::size_t>(f)] = f;
+    std::stable_sort(by_inverse.begin(), by_inverse.end(), [](int a, int b) {
+        return radical_inverse(static_cast<unsigned>(a)) <
+               radical_inverse(static_cast<unsigned>(b));
+    });
+    frames_.resize(static_cast<std::size_t>(frames));
+    for (int channel = 0; channel < 3; ++channel) {
+        const ChannelScale scale(channel);
+        for (int rank = 0; rank < frames; ++rank) {
+            FrameSpectrum& frame = frames_[static_cast<std::size_t>(by_inverse[rank])];
+            frame.count = 3;
+            SpectralSample& s = frame.samples[static_cast<std::size_t>(channel)];
+            s.wavelength_nm = scale.wavelength_at((rank + 0.5) / frames);
+            s.rgb_weight = glm::dvec3(0.0);
+            s.rgb_weight[channel] = 1.0;
+        }
+    }
 }
 
 }  // namespace gem

@@ -2,6 +2,7 @@
 // Spectral colour for dispersion ("fire"): the CIE 1931 colour matching functions and a set
 // of wavelength samples whose linear-RGB weights add up to white.
 
+#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -41,5 +42,36 @@ struct SpectralSamples {
 // the middle). Vary the jitter from frame to frame to trade banding for noise; the weights
 // do not depend on it.
 SpectralSamples spectral_samples(int count, double jitter = 0.5);
+
+// The wavelengths of a still view's frames: each frame traces one wavelength per colour
+// channel, and over the frames each channel's wavelengths stratify the spectrum by that
+// channel's colour matching function, so the mean of the frames is each channel's spectral
+// integral (as exact fire samples each channel at one dominant wavelength, kChannelNm). The
+// k-th of `frames` frames takes the middle of the stratum holding (r(k) + 1/2) / frames of the
+// channel's weight, r(k) its rank in radical-inverse order (0, 1/2, 1/4, 3/4, ...), so the
+// first few frames already cover the spectrum evenly. A sample counts for its own channel
+// only, with weight 1: every frame is white balanced, so a frame's sub-pixel offset and its
+// wavelengths do not mix (weights that differ from frame to frame would tint the edges the
+// offsets resolve). The linear-sRGB functions' negative lobes are left out: they only
+// subtract where the display clips to black anyway (a spectral colour outside the gamut).
+inline constexpr int kMaxWavelengthsPerFrame = 4;
+
+struct FrameSpectrum {
+    int count = 0;
+    std::array<SpectralSample, kMaxWavelengthsPerFrame> samples{};  // the first `count`
+};
+
+class StillSpectrum {
+  public:
+    // frames ≥ 1; three wavelengths a frame, one per channel.
+    explicit StillSpectrum(int frames);
+    int frames() const { return static_cast<int>(frames_.size()); }
+    int per_frame() const { return frames_.front().count; }
+    // Frame `index`, 0 ≤ index < frames().
+    const FrameSpectrum& frame(int index) const { return frames_[static_cast<std::size_t>(index)]; }
+
+  private:
+    std::vector<FrameSpectrum> frames_;
+};
 
 }  // namespace gem

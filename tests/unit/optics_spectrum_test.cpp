@@ -1,8 +1,10 @@
 // Spectral colour: the colour matching function fit against the published CIE 1931 table,
 // the spectral sample weights, and the sRGB encoding (IEC 61966-2-1).
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -47,6 +49,94 @@ TEST(OpticsSpectrum, SampleWeightsFollowTheirColour) {
     EXPECT_GT(green.y, green.z);
     EXPECT_GT(red.x, red.y);
     EXPECT_GT(red.x, red.z);
+}
+
+// The frames of a still view (StillSpectrum) against each channel's spectral integral taken
+// directly, a 0.01 nm midpoint sum of the linear-sRGB colour matching function's positive
+// part: the mean of the frames must approach it for any spectrum, with the error of a
+// midpoint rule on as many strata as frames.
+glm::dvec3 channel_integrals(glm::dvec3 (*colour)(double)) {
+    glm::dvec3 sum{0.0}, weight{0.0};
+    for (double nm = kSpectrumMinNm + 0.005; nm < kSpectrumMaxNm; nm += 0.01) {
+        const glm::dvec3 cmf = glm::max(xyz_to_linear_srgb(cie1931_xyz(nm)), glm::dvec3(0.0));
+        sum += cmf * colour(nm);
+        weight += cmf;
+    }
+    return sum / weight;
+}
+
+glm::dvec3 still_mean(const StillSpectrum& still, glm::dvec3 (*colour)(double)) {
+    glm::dvec3 sum{0.0};
+    for (int f = 0; f < still.frames(); ++f) {
+        const FrameSpectrum& frame = still.frame(f);
+        for (int k = 0; k < frame.count; ++k) {
+            sum += frame.samples[k].rgb_weight * colour(frame.samples[k].wavelength_nm);
+        }
+    }
+    return sum / static_cast<double>(still.frames());
+}
+
+glm::dvec3 smooth(double nm) {
+    return {1.0 + 0.5 * std::sin(nm / 23.0), 1.0 + 0.5 * std::cos(nm / 31.0), nm / 700.0};
+}
+// A prism's exit: one colour below 520 nm, another above (a ray that leaves by one facet at
+// short wavelengths and another at long ones).
+glm::dvec3 step(double nm) {
+    return nm < 520.0 ? glm::dvec3(0.2, 0.9, 3.0) : glm::dvec3(2.0, 0.1, 0.4);
+}
+
+TEST(OpticsSpectrum, StillFramesConvergeToEachChannelsSpectralIntegral) {
+    const StillSpectrum still(16);
+    ASSERT_EQ(still.frames(), 16);
+    ASSERT_EQ(still.per_frame(), 3);
+    // The tails' strata are wide (the last of red spans 650–730 nm): 2 % at 16 frames.
+    const glm::dvec3 a = still_mean(still, smooth), b = channel_integrals(smooth);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(a[c], b[c], 0.03) << "channel " << c;
+    // A step inside one stratum is off by at most that stratum's share (1/16) of the jump.
+    const glm::dvec3 s = still_mean(still, step), t = channel_integrals(step);
+    for (int c = 0; c < 3; ++c) {
+        const double jump = std::abs(step(519.0)[c] - step(521.0)[c]);
+        EXPECT_NEAR(s[c], t[c], jump / 16.0) << "channel " << c;
+    }
+    // More frames, closer.
+    const StillSpectrum many(256);
+    const glm::dvec3 m = still_mean(many, step), n = still_mean(many, smooth);
+    for (int c = 0; c < 3; ++c) {
+        EXPECT_NEAR(m[c], t[c], 0.01) << "channel " << c;
+        EXPECT_NEAR(n[c], b[c], 2e-3) << "channel " << c;
+    }
+}
+
+TEST(OpticsSpectrum, StillFramesAreWhiteAndStratifyEachChannel) {
+    const StillSpectrum still(16);
+    std::vector<double> by_channel[3];
+    for (int f = 0; f < still.frames(); ++f) {
+        const FrameSpectrum& frame = still.frame(f);
+        glm::dvec3 sum{0.0};
+        for (int k = 0; k < frame.count; ++k) {
+            by_channel[k].push_back(frame.samples[k].wavelength_nm);
+            sum += frame.samples[k].rgb_weight;
+        }
+        EXPECT_EQ(sum, glm::dvec3(1.0)) << "frame " << f;  // a grey stone is grey in every frame
+    }
+    // Red where red is, blue where blue is: each channel's strata lie where its function does.
+    const auto mid = [](std::vector<double> v) {
+        std::sort(v.begin(), v.end());
+        return v[v.size() / 2];
+    };
+    EXPECT_GT(mid(by_channel[0]), 580.0);
+    EXPECT_NEAR(mid(by_channel[1]), 550.0, 25.0);
+    EXPECT_LT(mid(by_channel[2]), 480.0);
+    for (auto& v : by_channel) {
+        std::sort(v.begin(), v.end());
+        for (std::size_t i = 1; i < v.size(); ++i) EXPECT_GT(v[i], v[i - 1]);  // one a stratum
+    }
+    // The first two frames reach both halves of each channel's range.
+    for (int k = 0; k < 3; ++k) {
+        const double a = still.frame(0).samples[k].wavelength_nm;
+        const double b = still.frame(1).samples[k].wavelength_nm;
+        EXPECT_GT(std::abs(a - b), 0.2 * (by_channel[k].back() - by_channel[k].front()));
+    }
 }
 
 TEST(OpticsSpectrum, ColourMatchingFitAgreesWithCieTable) {

@@ -10,7 +10,8 @@
 // of a mirror-symmetric stone and testing the few planes there, also constants
 // (trace/folded_exit.hpp, the CPU twin). trace_method.cpp measures which is fastest.
 // NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that may
-// re-enter through the cleft wait on a small fixed stack as on the CPU.
+// re-enter through the cleft wait on a small fixed stack as on the CPU; its fire is traced
+// only with FIRE_SPECTRAL.
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 out vec4 o_colour;
@@ -26,7 +27,14 @@ uniform vec3 u_ior_channel;  // n at the channels' dominant wavelengths
 const float kAir = 1.0;
 // Fire (compiled in, program_variants.hpp): none by default; FIRE_FIRST_ORDER moves exit
 // directions by d(direction)/dn (n(channel) - n) as the table method does; FIRE_EXACT traces
-// every channel at its own index.
+// every channel at its own index; FIRE_SPECTRAL traces each of a still frame's wavelengths
+// (optics/spectrum.hpp, StillSpectrum) at its own index and adds its colour with its
+// linear-RGB weight.
+#ifdef FIRE_SPECTRAL
+uniform int u_wavelength_count;
+uniform float u_wavelength_ior[4];  // kMaxWavelengthsPerFrame
+uniform vec3 u_wavelength_weight[4];
+#endif
 #ifdef FIRE_FIRST_ORDER
 const bool kFirstOrder = true;
 #else
@@ -438,6 +446,63 @@ struct Branch {
 // (64 deep) does, counting it truncated.
 const int kMaxBranches = 32;
 
+// Everything that leaves the stone from the ray refracted in at `entry` through `entry_facet`
+// with weight `weight`, every branch traced at index `ior`.
+vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, float ior) {
+    vec3 colour = vec3(0.0);
+    float t;
+    int facet;
+    vec3 n;
+    vec2 split;
+    Branch stack[kMaxBranches];
+    stack[0] = Branch(entry, inward, weight, 0.0, entry_facet, 1, true);
+    int top = 1;
+    while (top > 0) {
+        Branch b = stack[--top];
+        if (b.weight < u_min_weight || b.depth > u_max_depth) continue;
+        if (!b.inside) {
+            // Does the exit ray come back through the cleft?
+            if (!next_entry_from(b.origin, b.direction, b.facet, t, facet)) {
+                n = facet_plane(b.facet).xyz;
+                colour += shade_exit(b.origin, b.direction, n, b.weight, b.path_mm,
+                                     environment(b.origin, b.direction));
+                continue;
+            }
+            vec3 p = b.origin + t * b.direction;
+            n = facet_plane(facet).xyz;
+            split = split_weight(-dot(b.direction, n), kAir, ior);
+            if (top < kMaxBranches && split.x > 0.0) {
+                stack[top++] = Branch(p, reflect(b.direction, n), b.weight * split.x, b.path_mm,
+                                      facet, b.depth + 1, false);
+            }
+            vec3 in_dir;
+            if (top < kMaxBranches && split.y > 0.0 &&
+                refract_ray(b.direction, n, kAir, ior, in_dir)) {
+                stack[top++] =
+                    Branch(p, in_dir, b.weight * split.y, b.path_mm, facet, b.depth + 1, true);
+            }
+            continue;
+        }
+        if (!next_exit(b.origin, b.direction, b.facet, t, facet)) continue;
+        vec3 p = b.origin + t * b.direction;
+        n = facet_plane(facet).xyz;
+        float path = b.path_mm + t;
+        split = split_weight(dot(b.direction, n), ior, kAir);
+        // Reflection first, so the exit branch is resolved next and the stack stays shallow.
+        if (top < kMaxBranches && split.x > 0.0) {
+            stack[top++] =
+                Branch(p, reflect(b.direction, n), b.weight * split.x, path, facet, b.depth + 1,
+                       true);
+        }
+        vec3 out_dir;
+        if (top < kMaxBranches && split.y > 0.0 &&
+            refract_ray(b.direction, -n, ior, kAir, out_dir)) {
+            stack[top++] = Branch(p, out_dir, b.weight * split.y, path, facet, b.depth, false);
+        }
+    }
+    return colour;
+}
+
 #endif
 
 void main() {
@@ -453,15 +518,34 @@ void main() {
     float facing = dot(n, direction);
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
+#ifdef FIRE_SPECTRAL
+    // Each wavelength refracted in at its own index; what each reflects at the entry is
+    // added up first, so the reflection is shaded once.
+    vec3 colour = vec3(0.0);
+    vec3 reflected = vec3(0.0);
+    for (int k = 0; k < u_wavelength_count; ++k) {
+        float ior = u_wavelength_ior[k];
+        vec2 s = split_weight(-dot(direction, n), kAir, ior);
+        reflected += u_wavelength_weight[k] * s.x;
+        vec3 d;
+        if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
+#ifdef NON_CONVEX
+            colour += u_wavelength_weight[k] * follow_branches(entry, d, s.y, facet, ior);
+#else
+            colour += u_wavelength_weight[k] * follow_inside(entry, d, vec3(0.0), facet, s.y, ior);
+#endif
+        }
+    }
+    colour += reflected * shade_reflected(entry, reflect(direction, n), n, 1.0);
+#else
     vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, split.x);
-
     vec3 inward;
     bool refracted = refract_ray(direction, n, kAir, u_ior, inward);
-
-#ifndef NON_CONVEX
+#ifdef NON_CONVEX
+    if (refracted && split.y > 0.0) colour += follow_branches(entry, inward, split.y, facet, u_ior);
+#elif defined(FIRE_EXACT)
     // A convex stone holds one branch: the internal reflection; exit rays cannot come back.
-#ifdef FIRE_EXACT
     for (int c = 0; c < 3; ++c) {
         float ior = u_ior_channel[c];
         vec2 s = split_weight(-dot(direction, n), kAir, ior);
@@ -480,57 +564,6 @@ void main() {
         colour += follow_inside(entry, inward, dd, facet, split.y, u_ior);
     }
 #endif
-#else
-    float t;
-    Branch stack[kMaxBranches];
-    int top = 0;
-    if (refracted && split.y > 0.0) {
-        stack[0] = Branch(entry, inward, split.y, 0.0, facet, 1, true);
-        top = 1;
-    }
-    while (top > 0) {
-        Branch b = stack[--top];
-        if (b.weight < u_min_weight || b.depth > u_max_depth) continue;
-        if (!b.inside) {
-            // Does the exit ray come back through the cleft?
-            if (!next_entry_from(b.origin, b.direction, b.facet, t, facet)) {
-                n = facet_plane(b.facet).xyz;
-                colour += shade_exit(b.origin, b.direction, n, b.weight, b.path_mm,
-                                     environment(b.origin, b.direction));
-                continue;
-            }
-            vec3 p = b.origin + t * b.direction;
-            n = facet_plane(facet).xyz;
-            split = split_weight(-dot(b.direction, n), kAir, u_ior);
-            if (top < kMaxBranches && split.x > 0.0) {
-                stack[top++] = Branch(p, reflect(b.direction, n), b.weight * split.x, b.path_mm,
-                                      facet, b.depth + 1, false);
-            }
-            vec3 in_dir;
-            if (top < kMaxBranches && split.y > 0.0 &&
-                refract_ray(b.direction, n, kAir, u_ior, in_dir)) {
-                stack[top++] =
-                    Branch(p, in_dir, b.weight * split.y, b.path_mm, facet, b.depth + 1, true);
-            }
-            continue;
-        }
-        if (!next_exit(b.origin, b.direction, b.facet, t, facet)) continue;
-        vec3 p = b.origin + t * b.direction;
-        n = facet_plane(facet).xyz;
-        float path = b.path_mm + t;
-        split = split_weight(dot(b.direction, n), u_ior, kAir);
-        // Reflection first, so the exit branch is resolved next and the stack stays shallow.
-        if (top < kMaxBranches && split.x > 0.0) {
-            stack[top++] =
-                Branch(p, reflect(b.direction, n), b.weight * split.x, path, facet, b.depth + 1,
-                       true);
-        }
-        vec3 out_dir;
-        if (top < kMaxBranches && split.y > 0.0 &&
-            refract_ray(b.direction, -n, u_ior, kAir, out_dir)) {
-            stack[top++] = Branch(p, out_dir, b.weight * split.y, path, facet, b.depth, false);
-        }
-    }
 #endif
 
     o_colour = vec4(colour, 1.0);

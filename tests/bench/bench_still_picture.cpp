@@ -1,0 +1,249 @@
+// The shopper's still picture against the exact spectral reference, printed, not asserted
+// (docs/accuracy.md, "The still picture"). The scenes are gemrender's default scene (the
+// studio, its lights, physical shading) with the loose Tolkowsky diamond at elevation 40°,
+// azimuth 13.7° and face-up (384²), the oval sapphire at 55° and the heart ruby at 65° (256²).
+// The reference is the CPU tracer at depth 64, 16 samples a pixel, 12 wavelengths; every
+// picture goes through the same tone curve (no glare) and is compared as 8-bit sRGB, mean and
+// 99th percentile CIEDE2000 over the stone's pixels (render/image_error.hpp).
+//
+// Per scene: the moving picture (one frame, the trace at depth 8, exact fire, 4× MSAA), and
+// the still picture after the kiosk's 16 still frames with exact fire and with spectral fire
+// (each still frame its own wavelengths: gpu/hdr_picture.hpp). Then what a still frame costs
+// with spectral fire against one with exact fire, the two drawn in turn frame by frame (median
+// ms of --frames each, glFinish-bounded, and the median of the frame-by-frame ratios).
+//
+//   bench_still_picture [--frames N] [--cache DIR] [--only TEXT] [--images DIR]
+//
+// --cache keeps the references (PFM, a few minutes to trace) between runs; default: the build
+// tree. --images writes each picture and the reference as PNG.
+#include <CLI/CLI.hpp>
+
+#include <cstdio>
+#include <filesystem>
+#include <string>
+#include <vector>
+
+#include "gpu/egl_context.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "gpu/hdr_picture.hpp"
+#include "gpu/render_target.hpp"
+#include "render/image_error.hpp"
+#include "render/reference_render.hpp"
+#include "render/tone_map.hpp"
+#include "scene/scene.hpp"
+#include "scene/scene_build.hpp"
+
+#include "bench_support.hpp"
+
+namespace {
+
+constexpr const char* kProgram = "bench_still_picture";
+template <class T>
+T must(gem::Result<T> r) {
+    return gem::bench::must(kProgram, std::move(r));
+}
+using gem::gpu::TraceDispersion;
+
+struct StillScene {
+    const char* name;
+    gem::CutShape cut;
+    const char* material;
+    double elevation_deg;
+    double azimuth_deg;
+    int size;
+};
+
+gem::Scene scene_of(const StillScene& s) {
+    gem::Scene scene = gem::default_scene();
+    scene.stone.cut = gem::default_cut_params(s.cut);
+    scene.material.name = s.material;
+    scene.camera.elevation_deg = s.elevation_deg;
+    scene.camera.azimuth_deg = s.azimuth_deg;
+    scene.width = scene.height = s.size;
+    return scene;
+}
+
+// The reference, traced once and kept in `cache` (colour, and coverage as a second PFM).
+gem::Image reference(const StillScene& s, const std::filesystem::path& cache) {
+    const std::filesystem::path colour = cache / (std::string(s.name) + ".pfm");
+    const std::filesystem::path coverage = cache / (std::string(s.name) + "-coverage.pfm");
+    if (std::filesystem::exists(colour) && std::filesystem::exists(coverage)) {
+        gem::Image image = must(gem::read_pfm(colour));
+        const gem::Image alpha = must(gem::read_pfm(coverage));
+        for (std::size_t i = 0; i < image.pixels.size(); ++i) {
+            image.pixels[i].w = alpha.pixels[i].x;
+        }
+        return image;
+    }
+    gem::Scene scene = scene_of(s);
+    scene.spectral = true;
+    scene.samples_per_pixel = 16;
+    scene.depth = 64;
+    std::printf("  tracing the reference of %s ...\n", s.name);
+    std::fflush(stdout);
+    gem::RenderStats stats;
+    gem::Image image = must(gem::render_reference(must(gem::build_stone(scene)),
+                                                  must(gem::build_environment(scene)),
+                                                  gem::render_settings(scene), &stats));
+    std::filesystem::create_directories(cache);
+    gem::Image alpha = image;
+    for (glm::vec4& p : alpha.pixels) p = glm::vec4(p.w, p.w, p.w, 1.0f);
+    must(gem::write_pfm(image, colour));
+    must(gem::write_pfm(alpha, coverage));
+    std::printf("  ... %.0f s\n", stats.seconds);
+    return image;
+}
+
+struct Variant {
+    const char* label;
+    TraceDispersion fire;
+    int still_frames;  // 1: the moving picture
+};
+
+// The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
+gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth) {
+    const gem::Scene scene = scene_of(s);
+    const gem::Environment environment = must(gem::build_environment(scene));
+    const gem::RenderSettings settings = gem::render_settings(scene);
+    gem::gpu::FrameSetup setup;
+    setup.method = "trace";
+    setup.stone = must(gem::build_stone(scene));
+    setup.material = setup.stone.material;
+    setup.shading = settings.shading;
+    setup.trace = settings.trace;
+    setup.trace.max_depth = depth;
+    setup.trace_dispersion = v.fire;
+    setup.environment = &environment;
+    auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
+    auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
+    const bool spectral = v.fire == TraceDispersion::spectral;
+    auto hdr = must(gem::gpu::HdrPicture::make(s.size, s.size,
+                                               {.samples = 4,
+                                                .display = {},
+                                                .glare = 0.0,
+                                                .still_frames = v.still_frames,
+                                                .spectral = spectral}));
+    for (int f = 0; f < v.still_frames; ++f) {
+        hdr.begin_frame(v.still_frames > 1);
+        gem::CameraSettings cs = scene.camera;
+        cs.shift += hdr.jitter_ndc();
+        const auto camera = must(gem::Camera::make(cs, renderer.stone_radius_mm(), s.size, s.size));
+        hdr.bind();
+        must(renderer.render(camera, gem::gpu::FrameWait::frame, hdr.spectrum()));
+        must(hdr.finish(target));
+    }
+    return target.read();
+}
+
+gem::ImageError error_of(gem::Image picture, const gem::Image& reference_display) {
+    for (std::size_t i = 0; i < picture.pixels.size(); ++i) {
+        picture.pixels[i].w = reference_display.pixels[i].w;
+    }
+    return must(gem::compare_images(picture, reference_display, {.only_stone = true}));
+}
+
+// A still frame with spectral fire against one with exact fire, drawn in turn.
+void frame_costs(const StillScene& s, int frames, int depth) {
+    const gem::Scene scene = scene_of(s);
+    const gem::Environment environment = must(gem::build_environment(scene));
+    const gem::RenderSettings settings = gem::render_settings(scene);
+    gem::gpu::FrameSetup setup;
+    setup.method = "trace";
+    setup.stone = must(gem::build_stone(scene));
+    setup.material = setup.stone.material;
+    setup.shading = settings.shading;
+    setup.trace = settings.trace;
+    setup.trace.max_depth = depth;
+    setup.trace_dispersion = TraceDispersion::spectral;
+    setup.environment = &environment;
+    auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
+    auto hdr = must(gem::gpu::HdrPicture::make(
+        s.size, s.size,
+        {.samples = 4, .display = {}, .glare = 0.0, .still_frames = 16, .spectral = true}));
+    auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
+    std::vector<double> spectral, exact, ratio;
+    for (int f = -1; f < frames; ++f) {
+        double ms[2] = {};
+        for (int k = 0; k < 2; ++k) {
+            hdr.begin_frame(true);
+            if (hdr.settled()) hdr.begin_frame(false);  // a new still view: frames to average
+            const auto camera =
+                must(gem::Camera::make(scene.camera, renderer.stone_radius_mm(), s.size, s.size));
+            hdr.bind();
+            // A still frame drawn with its wavelengths (spectral) or without (exact fire).
+            ms[k] = must(renderer.render(camera, gem::gpu::FrameWait::frame,
+                                         k == 0 ? hdr.spectrum() : nullptr))
+                        .cpu_ms;
+            must(hdr.finish(target));
+        }
+        if (f < 0) continue;  // the programs' first use
+        spectral.push_back(ms[0]);
+        exact.push_back(ms[1]);
+        ratio.push_back(ms[0] / ms[1]);
+    }
+    std::printf("%-22s still frame, spectral %7.1f ms, exact %7.1f ms, ratio %.2f (median of %d)\n",
+                s.name, gem::bench::median(spectral), gem::bench::median(exact),
+                gem::bench::median(ratio), frames);
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+    int frames = 9;
+    int depth = 8;
+    std::string cache = GEM_STILL_REFERENCE_CACHE;
+    std::string only;
+    std::string images;
+    CLI::App app{"bench_still_picture: the still picture against the spectral reference"};
+    app.add_option("--frames", frames, "frames timed per fire")->check(CLI::Range(1, 1000));
+    app.add_option("--cache", cache, "references are kept here")->capture_default_str();
+    app.add_option("--depth", depth, "depth the GPU traces to")->check(CLI::Range(1, 64));
+    app.add_option("--only", only, "scenes whose name contains this");
+    app.add_option("--images", images, "write the pictures here as PNG");
+    CLI11_PARSE(app, argc, argv);
+    auto context = must(gem::gpu::EglContext::headless());
+    std::printf("GL: %s\n", context.description().c_str());
+
+    const std::vector<StillScene> scenes = {
+        {"diamond-40", gem::CutShape::round_brilliant, "diamond", 40.0, 13.7, 384},
+        {"diamond-face-up", gem::CutShape::round_brilliant, "diamond", 90.0, 13.7, 384},
+        {"oval-sapphire-55", gem::CutShape::oval, "sapphire", 55.0, 0.0, 256},
+        {"heart-ruby-65", gem::CutShape::heart, "ruby", 65.0, 0.0, 256},
+    };
+    const std::vector<Variant> variants = {
+        {"moving: 1 frame, exact fire", TraceDispersion::exact, 1},
+        {"still: 16 frames, exact fire", TraceDispersion::exact, 16},
+        {"still: 16 frames, spectral fire", TraceDispersion::spectral, 16},
+    };
+    std::printf(
+        "\nAgainst the spectral reference (depth 64, 16 spp, 12 wavelengths); GPU trace at "
+        "depth %d, 4× MSAA: mean / p99 ΔE00 over the stone's pixels\n",
+        depth);
+    for (const StillScene& s : scenes) {
+        if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
+        const gem::Image ref = gem::to_display(reference(s, cache), {});
+        if (!images.empty()) {
+            std::filesystem::create_directories(images);
+            must(gem::write_png(
+                ref, std::filesystem::path(images) / (std::string(s.name) + "-reference.png")));
+        }
+        for (std::size_t i = 0; i < variants.size(); ++i) {
+            const gem::Image picture = gpu_picture(s, variants[i], depth);
+            const gem::ImageError e = error_of(picture, ref);
+            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name, variants[i].label,
+                        e.delta_e_mean, e.delta_e_p99);
+            std::fflush(stdout);
+            if (!images.empty()) {
+                must(gem::write_png(picture,
+                                    std::filesystem::path(images) /
+                                        (std::string(s.name) + "-" + std::to_string(i) + ".png")));
+            }
+        }
+    }
+    std::printf("\nWhat a still frame costs (trace, depth %d, 4× MSAA)\n", depth);
+    for (const StillScene& s : scenes) {
+        if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
+        frame_costs(s, frames, depth);
+    }
+    return 0;
+}

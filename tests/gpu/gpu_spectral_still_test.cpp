@@ -1,0 +1,143 @@
+// Spectral still frames (gpu/hdr_picture.hpp, TraceDispersion::spectral): a still view whose
+// frames each trace their own wavelengths, one per channel (optics/spectrum.hpp).
+#include <gtest/gtest.h>
+
+#include "geometry/cuts.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "gpu/gl_check.hpp"
+#include "gpu/hdr_picture.hpp"
+#include "gpu_test_support.hpp"
+#include "optics/material.hpp"
+#include "render/image_error.hpp"
+#include "render/reference_render.hpp"
+#include "render/tone_map.hpp"
+#include "scene/scene.hpp"
+
+namespace gem {
+namespace {
+
+constexpr int kSide = 64;
+constexpr int kStillFrames = 16;  // the kiosk's
+
+CameraSettings view() {
+    CameraSettings c;
+    c.elevation_deg = 40.0;
+    c.azimuth_deg = 13.7;
+    return c;
+}
+
+ShadingSettings lights() {
+    ShadingSettings s;
+    s.lights = {{{20.0, 60.0, 40.0}, false, {2.0, 2.0, 2.0}}};
+    return s;
+}
+
+// The still picture of `stone` after `frames` frames, traced at depth 8 with `fire`.
+Result<Image> still_picture(const Stone& stone, gpu::TraceDispersion fire,
+                            const Environment& environment, int frames = kStillFrames) {
+    gpu::FrameSetup setup;
+    setup.method = "trace";
+    setup.stone = stone;
+    setup.material = stone.material;
+    setup.shading = lights();
+    setup.trace.max_depth = 8;
+    setup.trace_dispersion = fire;
+    setup.environment = &environment;
+    setup.cube_face = 64;
+    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    if (!renderer) return Error{renderer.error()};
+    auto target = gpu::RenderTarget::make(kSide, kSide);
+    if (!target) return Error{target.error()};
+    auto hdr = gpu::HdrPicture::make(kSide, kSide,
+                                     {.samples = 4,
+                                      .display = {},
+                                      .glare = 0.0,
+                                      .still_frames = frames,
+                                      .spectral = fire == gpu::TraceDispersion::spectral});
+    if (!hdr) return Error{hdr.error()};
+    for (int f = 0; f < frames; ++f) {
+        hdr.value().begin_frame(true);
+        CameraSettings cs = view();
+        cs.shift += hdr.value().jitter_ndc();
+        auto camera = Camera::make(cs, renderer.value().stone_radius_mm(), kSide, kSide);
+        if (!camera) return Error{camera.error()};
+        hdr.value().bind();
+        auto drawn =
+            renderer.value().render(camera.value(), gpu::FrameWait::frame, hdr.value().spectrum());
+        if (!drawn) return Error{drawn.error()};
+        auto finished = hdr.value().finish(target.value());
+        if (!finished) return Error{finished.error()};
+    }
+    return target.value().read();
+}
+
+// The cut in the built-in material, or in one of constant index `index`.
+Stone cut(CutShape shape, std::optional<double> index = std::nullopt) {
+    MaterialChoice choice;
+    choice.index = index;
+    return make_cut(default_cut_params(shape), resolve_material(choice).value()).value();
+}
+
+TEST(GpuSpectralStill, AStoneWithoutDispersionLooksAsWithoutFire) {
+    // One index at every wavelength: each frame's three wavelengths see the same stone, each
+    // counts for its own channel with weight 1, so every frame is the plain frame. A frame
+    // whose weights did not add up to white, or that mixed its jitter with its wavelengths,
+    // would tint the picture or its edges.
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const Environment environment = Environment::studio();
+    for (CutShape shape : {CutShape::round_brilliant, CutShape::heart}) {
+        const Stone stone = cut(shape, 2.417);
+        ASSERT_FALSE(stone.material.disperses());
+        // Four frames: the heart's triangles are slow to trace.
+        auto plain = still_picture(stone, gpu::TraceDispersion::none, environment, 4);
+        auto spectral = still_picture(stone, gpu::TraceDispersion::spectral, environment, 4);
+        ASSERT_TRUE(plain.ok() && spectral.ok()) << plain.error() << spectral.error();
+        auto e = compare_images(spectral.value(), plain.value());
+        ASSERT_TRUE(e.ok()) << e.error();
+        EXPECT_LT(e.value().delta_e_max, 0.5) << to_string(shape);
+    }
+    EXPECT_TRUE(gpu::gl_check("spectral still").ok());
+}
+
+TEST(GpuSpectralStill, ADiamondsStillPictureComesToTheSpectralReference) {
+    // The CPU reference at the same depth (8), 16 samples a pixel, 12 wavelengths: what is
+    // left between it and the GPU is the fire (and sampling). Spectral still frames must come
+    // closer to it than no fire and than exact fire's three fixed wavelengths.
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const Environment environment = Environment::studio();
+    const Stone stone = cut(CutShape::round_brilliant);
+    RenderSettings settings;
+    settings.width = settings.height = kSide;
+    settings.samples_per_pixel = 16;
+    settings.camera = view();
+    settings.shading = lights();
+    settings.trace.max_depth = 8;
+    settings.spectral = true;
+    auto reference = render_reference(stone, environment, settings);
+    ASSERT_TRUE(reference.ok()) << reference.error();
+    const Image truth = to_display(reference.value(), {});
+    double error[3] = {};
+    int i = 0;
+    for (gpu::TraceDispersion fire : {gpu::TraceDispersion::none, gpu::TraceDispersion::exact,
+                                      gpu::TraceDispersion::spectral}) {
+        auto picture = still_picture(stone, fire, environment);
+        ASSERT_TRUE(picture.ok()) << picture.error();
+        Image masked = picture.value();
+        for (std::size_t p = 0; p < masked.pixels.size(); ++p) {
+            masked.pixels[p].w = truth.pixels[p].w;
+        }
+        auto e = compare_images(masked, truth, {.only_stone = true});
+        ASSERT_TRUE(e.ok()) << e.error();
+        error[i++] = e.value().delta_e_mean;
+        gpu_test::write_artifact(picture.value(),
+                                 std::string("spectral_still_") + gpu::to_string(fire) + ".png");
+    }
+    gpu_test::write_artifact(truth, "spectral_still_reference.png");
+    EXPECT_LT(error[2], error[0]) << "spectral " << error[2] << ", no fire " << error[0];
+    EXPECT_LT(error[2], error[1]) << "spectral " << error[2] << ", exact " << error[1];
+}
+
+}  // namespace
+}  // namespace gem
