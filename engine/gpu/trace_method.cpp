@@ -102,10 +102,13 @@ std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch se
     return ProgramVariants("trace", {});
 }
 
-// The fire a draw compiles in: a non-convex stone traces fire only with a frame's wavelengths
-// (trace.frag), and spectral fire without them is exact.
+// The fire a draw compiles in. A still frame's wavelengths (a spectral picture's) replace a
+// convex stone's fire, whichever it is; a non-convex stone traces fire only with them and when
+// asked for spectral fire (trace.frag: its triangles make three wavelengths three times the
+// work). Spectral fire without them is exact.
 std::uint32_t fire_features(TraceDispersion dispersion, bool convex, bool has_spectrum) {
-    if (dispersion == TraceDispersion::spectral && has_spectrum) return kFireSpectral;
+    if (dispersion == TraceDispersion::none) return 0;
+    if (has_spectrum && (convex || dispersion == TraceDispersion::spectral)) return kFireSpectral;
     if (!convex) return 0;
     switch (dispersion) {
         case TraceDispersion::none:

@@ -29,10 +29,10 @@ enum class TraceDispersion {
     none,         // one index, n(D)
     first_order,  // exit directions moved by their derivative with respect to n, per channel
     exact,        // each colour channel traced at its own index (three times the work)
-    // A still view's frames each trace their own wavelengths at their own indices
+    // Exact while the view moves; a still view's frames each trace their own wavelengths
     // (StoneFrame::spectrum, optics/spectrum.hpp: StillSpectrum), so the still picture
-    // converges to the spectral integral; a frame without them (the view moving) is drawn
-    // with exact fire. A non-convex stone traces no fire while moving.
+    // converges to the spectral integral. A convex stone's still frames do so with any fire
+    // when given wavelengths; a non-convex stone's only with this (and no fire while moving).
     spectral,
 };
 // "none", "first-order", "exact", "spectral": for logs and benchmark tables.

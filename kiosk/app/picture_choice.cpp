@@ -14,6 +14,7 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
     o.samples = picture.msaa;
     o.glare = picture.glare;
     o.still_frames = picture.still_frames;
+    o.spectral = picture.spectral_stills && picture.still_frames > 1;
     o.display = display_transform(picture, LookChoice{});
     return o;
 }

@@ -47,6 +47,9 @@ struct PictureConfig {
     PictureTone tone = PictureTone::neutral;  // Khronos PBR Neutral, or a plain clip
     double exposure_ev = 0.0;                 // stops, added to each lighting preset's own
     int still_frames = 16;                    // frames averaged, sub-pixel apart, while still
+    // A convex stone's fire in still frames: each traces its own wavelengths, one per channel,
+    // so the still picture comes to the spectral truth (gpu/hdr_picture.hpp).
+    bool spectral_stills = true;
     // Start view: the girdle's width as a share of the picture's height, as far as the whole
     // ring still fits (app/framing.hpp).
     double stone_share = 0.25;

@@ -210,6 +210,8 @@ constexpr KeySpec<PictureConfig> kPictureKeys[] = {
                        PictureConfig& o) { r.number(n, k, -16.0, 16.0, o.exposure_ev); }},
     {"still_frames", [](ConfigReader& r, const Node& n, Key k,
                         PictureConfig& o) { r.integer(n, k, 1, 256, o.still_frames); }},
+    {"spectral_stills", [](ConfigReader& r, const Node& n, Key k,
+                           PictureConfig& o) { r.boolean(n, k, o.spectral_stills); }},
     {"stone_share", [](ConfigReader& r, const Node& n, Key k,
                        PictureConfig& o) { r.number(n, k, 0.05, 0.8, o.stone_share); }},
 };

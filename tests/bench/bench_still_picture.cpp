@@ -12,10 +12,13 @@
 // with spectral fire against one with exact fire, the two drawn in turn frame by frame (median
 // ms of --frames each, glFinish-bounded, and the median of the frame-by-frame ratios).
 //
-//   bench_still_picture [--frames N] [--cache DIR] [--only TEXT] [--images DIR]
+//   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--cache DIR] [--only TEXT]
+//                       [--images DIR] [--reference-check N]
 //
-// --cache keeps the references (PFM, a few minutes to trace) between runs; default: the build
-// tree. --images writes each picture and the reference as PNG.
+// --depth, --min-weight: the GPU trace's (default 8, 1e-4). --cache keeps the references (PFM,
+// a few minutes to trace) between runs; default: the build tree. --images writes each picture
+// and the reference as PNG. --reference-check N also traces the reference at N wavelengths and
+// prints how far the 12-wavelength one is from it: how converged the reference itself is.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -63,10 +66,14 @@ gem::Scene scene_of(const StillScene& s) {
     return scene;
 }
 
-// The reference, traced once and kept in `cache` (colour, and coverage as a second PFM).
-gem::Image reference(const StillScene& s, const std::filesystem::path& cache) {
-    const std::filesystem::path colour = cache / (std::string(s.name) + ".pfm");
-    const std::filesystem::path coverage = cache / (std::string(s.name) + "-coverage.pfm");
+// The reference at `wavelengths` wavelengths, traced once and kept in `cache` (colour, and
+// coverage as a second PFM).
+gem::Image reference(const StillScene& s, const std::filesystem::path& cache,
+                     int wavelengths = 12) {
+    const std::string stem =
+        std::string(s.name) + (wavelengths == 12 ? "" : "-" + std::to_string(wavelengths) + "-wavelengths");
+    const std::filesystem::path colour = cache / (stem + ".pfm");
+    const std::filesystem::path coverage = cache / (stem + "-coverage.pfm");
     if (std::filesystem::exists(colour) && std::filesystem::exists(coverage)) {
         gem::Image image = must(gem::read_pfm(colour));
         const gem::Image alpha = must(gem::read_pfm(coverage));
@@ -77,9 +84,10 @@ gem::Image reference(const StillScene& s, const std::filesystem::path& cache) {
     }
     gem::Scene scene = scene_of(s);
     scene.spectral = true;
+    scene.spectral_samples = wavelengths;
     scene.samples_per_pixel = 16;
     scene.depth = 64;
-    std::printf("  tracing the reference of %s ...\n", s.name);
+    std::printf("  tracing the reference of %s at %d wavelengths ...\n", s.name, wavelengths);
     std::fflush(stdout);
     gem::RenderStats stats;
     gem::Image image = must(gem::render_reference(must(gem::build_stone(scene)),
@@ -101,7 +109,7 @@ struct Variant {
 };
 
 // The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
-gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth) {
+gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
     const gem::RenderSettings settings = gem::render_settings(scene);
@@ -112,6 +120,7 @@ gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth) {
     setup.shading = settings.shading;
     setup.trace = settings.trace;
     setup.trace.max_depth = depth;
+    setup.trace.min_weight = min_weight;
     setup.trace_dispersion = v.fire;
     setup.environment = &environment;
     auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
@@ -143,7 +152,7 @@ gem::ImageError error_of(gem::Image picture, const gem::Image& reference_display
 }
 
 // A still frame with spectral fire against one with exact fire, drawn in turn.
-void frame_costs(const StillScene& s, int frames, int depth) {
+void frame_costs(const StillScene& s, int frames, int depth, double min_weight) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
     const gem::RenderSettings settings = gem::render_settings(scene);
@@ -154,6 +163,7 @@ void frame_costs(const StillScene& s, int frames, int depth) {
     setup.shading = settings.shading;
     setup.trace = settings.trace;
     setup.trace.max_depth = depth;
+    setup.trace.min_weight = min_weight;
     setup.trace_dispersion = TraceDispersion::spectral;
     setup.environment = &environment;
     auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
@@ -191,15 +201,22 @@ void frame_costs(const StillScene& s, int frames, int depth) {
 int main(int argc, char** argv) {
     int frames = 9;
     int depth = 8;
+    double min_weight = gem::TraceSettings{}.min_weight;
     std::string cache = GEM_STILL_REFERENCE_CACHE;
     std::string only;
     std::string images;
+    int check = 0;
     CLI::App app{"bench_still_picture: the still picture against the spectral reference"};
     app.add_option("--frames", frames, "frames timed per fire")->check(CLI::Range(1, 1000));
     app.add_option("--cache", cache, "references are kept here")->capture_default_str();
     app.add_option("--depth", depth, "depth the GPU traces to")->check(CLI::Range(1, 64));
+    app.add_option("--min-weight", min_weight, "branches below this weight are cut")
+        ->capture_default_str();
     app.add_option("--only", only, "scenes whose name contains this");
     app.add_option("--images", images, "write the pictures here as PNG");
+    app.add_option("--reference-check", check,
+                   "also the reference at this many wavelengths against the one at 12")
+        ->check(CLI::Range(13, 1000));
     CLI11_PARSE(app, argc, argv);
     auto context = must(gem::gpu::EglContext::headless());
     std::printf("GL: %s\n", context.description().c_str());
@@ -222,13 +239,20 @@ int main(int argc, char** argv) {
     for (const StillScene& s : scenes) {
         if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
         const gem::Image ref = gem::to_display(reference(s, cache), {});
+        if (check > 0) {
+            const gem::Image finer = gem::to_display(reference(s, cache, check), {});
+            const gem::ImageError e = must(gem::compare_images(ref, finer, {.only_stone = true}));
+            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name,
+                        ("reference, 12 against " + std::to_string(check) + " wavelengths").c_str(),
+                        e.delta_e_mean, e.delta_e_p99);
+        }
         if (!images.empty()) {
             std::filesystem::create_directories(images);
             must(gem::write_png(
                 ref, std::filesystem::path(images) / (std::string(s.name) + "-reference.png")));
         }
         for (std::size_t i = 0; i < variants.size(); ++i) {
-            const gem::Image picture = gpu_picture(s, variants[i], depth);
+            const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight);
             const gem::ImageError e = error_of(picture, ref);
             std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name, variants[i].label,
                         e.delta_e_mean, e.delta_e_p99);
@@ -243,7 +267,7 @@ int main(int argc, char** argv) {
     std::printf("\nWhat a still frame costs (trace, depth %d, 4× MSAA)\n", depth);
     for (const StillScene& s : scenes) {
         if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
-        frame_costs(s, frames, depth);
+        frame_costs(s, frames, depth, min_weight);
     }
     return 0;
 }
