@@ -126,16 +126,16 @@ std::uint32_t fire_features(TraceDispersion dispersion, bool convex, bool has_sp
 // them, and their weights.
 void set_wavelength_uniforms(const Program& p, const FrameSpectrum& spectrum,
                              const Material& material) {
-    float ior[kMaxWavelengthsPerFrame] = {};
-    glm::vec3 weight[kMaxWavelengthsPerFrame] = {};
+    float ior[kWavelengthsPerFrame] = {};
+    glm::vec3 weight[kWavelengthsPerFrame] = {};
     for (int k = 0; k < spectrum.count; ++k) {
         const SpectralSample& s = spectrum.samples[static_cast<std::size_t>(k)];
         ior[k] = static_cast<float>(material.index(s.wavelength_nm));
         weight[k] = glm::vec3(s.rgb_weight);
     }
     p.set("u_wavelength_count", spectrum.count);
-    p.set("u_wavelength_ior", ior, kMaxWavelengthsPerFrame);
-    p.set("u_wavelength_weight", weight, kMaxWavelengthsPerFrame);
+    p.set("u_wavelength_ior", ior, kWavelengthsPerFrame);
+    p.set("u_wavelength_weight", weight, kWavelengthsPerFrame);
 }
 
 }  // namespace
@@ -279,8 +279,9 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     p.set("u_r_factor", static_cast<float>(trace.r_factor));
     p.set("u_t_factor", static_cast<float>(trace.t_factor));
     p.set("u_ior_channel", channel_indices(frame.material));
-    if ((features & kFireSpectral) != 0)
+    if ((features & kFireSpectral) != 0) {
         set_wavelength_uniforms(p, *frame.spectrum, frame.material);
+    }
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");

@@ -101,8 +101,10 @@ SpectralSamples spectral_samples(int count, double jitter) {
 
 StillSpectrum::StillSpectrum(int frames) {
     assert(frames >= 1);
-    // The frames ranked by the radical inverse of their index: frame f samples stratum
-    // rank[f] of each channel.
+    // The frames ranked by the radical inverse of their index; the frame of rank r samples
+    // stratum (r + frames / 2) mod frames of each channel, so the first still frame takes the
+    // middle of each channel's range, as near the moving picture's dominant wavelengths as a
+    // stratum comes, and the next ones the middles of its halves, quarters, ...
     std::vector<int> by_inverse(static_cast<std::size_t>(frames));
     for (int f = 0; f < frames; ++f) by_inverse[static_cast<std::size_t>(f)] = f;
     std::stable_sort(by_inverse.begin(), by_inverse.end(), [](int a, int b) {
@@ -116,7 +118,8 @@ StillSpectrum::StillSpectrum(int frames) {
             FrameSpectrum& frame = frames_[static_cast<std::size_t>(by_inverse[rank])];
             frame.count = 3;
             SpectralSample& s = frame.samples[static_cast<std::size_t>(channel)];
-            s.wavelength_nm = scale.wavelength_at((rank + 0.5) / frames);
+            const int stratum = (rank + frames / 2) % frames;
+            s.wavelength_nm = scale.wavelength_at((stratum + 0.5) / frames);
             s.rgb_weight = glm::dvec3(0.0);
             s.rgb_weight[channel] = 1.0;
         }

@@ -32,8 +32,8 @@ const float kAir = 1.0;
 // linear-RGB weight.
 #ifdef FIRE_SPECTRAL
 uniform int u_wavelength_count;
-uniform float u_wavelength_ior[4];  // kMaxWavelengthsPerFrame
-uniform vec3 u_wavelength_weight[4];
+uniform float u_wavelength_ior[3];  // kWavelengthsPerFrame
+uniform vec3 u_wavelength_weight[3];
 #endif
 #ifdef FIRE_FIRST_ORDER
 const bool kFirstOrder = true;
