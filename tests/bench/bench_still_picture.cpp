@@ -71,7 +71,8 @@ gem::Scene scene_of(const StillScene& s) {
 gem::Image reference(const StillScene& s, const std::filesystem::path& cache,
                      int wavelengths = 12) {
     const std::string stem =
-        std::string(s.name) + (wavelengths == 12 ? "" : "-" + std::to_string(wavelengths) + "-wavelengths");
+        std::string(s.name) +
+        (wavelengths == 12 ? "" : "-" + std::to_string(wavelengths) + "-wavelengths");
     const std::filesystem::path colour = cache / (stem + ".pfm");
     const std::filesystem::path coverage = cache / (stem + "-coverage.pfm");
     if (std::filesystem::exists(colour) && std::filesystem::exists(coverage)) {
@@ -108,10 +109,10 @@ struct Variant {
     int still_frames;  // 1: the moving picture
 };
 
-// The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
-gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight) {
-    const gem::Scene scene = scene_of(s);
-    const gem::Environment environment = must(gem::build_environment(scene));
+// The trace of `scene` as gemrender draws it, at `depth` and `min_weight` with `fire`;
+// `environment` must outlive it.
+gem::gpu::FrameRenderer trace_renderer(const gem::Scene& scene, const gem::Environment& environment,
+                                       int depth, double min_weight, TraceDispersion fire) {
     const gem::RenderSettings settings = gem::render_settings(scene);
     gem::gpu::FrameSetup setup;
     setup.method = "trace";
@@ -121,9 +122,16 @@ gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double 
     setup.trace = settings.trace;
     setup.trace.max_depth = depth;
     setup.trace.min_weight = min_weight;
-    setup.trace_dispersion = v.fire;
+    setup.trace_dispersion = fire;
     setup.environment = &environment;
-    auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
+    return must(gem::gpu::FrameRenderer::make(std::move(setup)));
+}
+
+// The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
+gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight) {
+    const gem::Scene scene = scene_of(s);
+    const gem::Environment environment = must(gem::build_environment(scene));
+    auto renderer = trace_renderer(scene, environment, depth, min_weight, v.fire);
     auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
     const bool spectral = v.fire == TraceDispersion::spectral;
     auto hdr = must(gem::gpu::HdrPicture::make(s.size, s.size,
@@ -155,18 +163,8 @@ gem::ImageError error_of(gem::Image picture, const gem::Image& reference_display
 void frame_costs(const StillScene& s, int frames, int depth, double min_weight) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
-    const gem::RenderSettings settings = gem::render_settings(scene);
-    gem::gpu::FrameSetup setup;
-    setup.method = "trace";
-    setup.stone = must(gem::build_stone(scene));
-    setup.material = setup.stone.material;
-    setup.shading = settings.shading;
-    setup.trace = settings.trace;
-    setup.trace.max_depth = depth;
-    setup.trace.min_weight = min_weight;
-    setup.trace_dispersion = TraceDispersion::spectral;
-    setup.environment = &environment;
-    auto renderer = must(gem::gpu::FrameRenderer::make(std::move(setup)));
+    auto renderer =
+        trace_renderer(scene, environment, depth, min_weight, TraceDispersion::spectral);
     auto hdr = must(gem::gpu::HdrPicture::make(
         s.size, s.size,
         {.samples = 4, .display = {}, .glare = 0.0, .still_frames = 16, .spectral = true}));
