@@ -95,7 +95,12 @@ TEST(GpuSpectralStill, AStoneWithoutDispersionLooksAsWithoutFire) {
         ASSERT_TRUE(plain.ok() && spectral.ok()) << plain.error() << spectral.error();
         auto e = compare_images(spectral.value(), plain.value());
         ASSERT_TRUE(e.ok()) << e.error();
-        EXPECT_LT(e.value().delta_e_max, 0.5) << to_string(shape);
+        // Each renderer keeps the exit search it measured fastest (trace_method.hpp), and the
+        // searches may round a ray on an edge to either side: a few pixels may differ whole.
+        // A tint moves every pixel: before one wavelength per channel, ΔE00 1.2 on average,
+        // 18 at the 99th percentile.
+        EXPECT_LT(e.value().delta_e_mean, 0.05) << to_string(shape);
+        EXPECT_LT(e.value().delta_e_p99, 0.5) << to_string(shape);
     }
     EXPECT_TRUE(gpu::gl_check("spectral still").ok());
 }
