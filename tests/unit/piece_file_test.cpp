@@ -180,7 +180,10 @@ TEST(PieceFile, UnknownKeysSettingsAndMetalsAreRefused) {
 class FreePiece : public ::testing::Test {
   protected:
     void SetUp() override {
-        dir_ = fs::path(GEM_ARTIFACT_DIR) / "free_piece";
+        // A folder per test: ctest runs the tests of this fixture side by side, and one's
+        // SetUp would rewrite the files another is reading.
+        dir_ = fs::path(GEM_ARTIFACT_DIR) / "free_piece" /
+               ::testing::UnitTest::GetInstance()->current_test_info()->name();
         fs::create_directories(dir_);
         std::ofstream stone(dir_ / "small.toml");
         stone << "[stone]\ncut = \"round\"\nwidth_mm = 2.0\n[material]\nname = \"diamond\"\n";
