@@ -6,8 +6,7 @@ namespace gem::gpu {
 
 std::vector<ProgramSpec> all_program_specs() {
     constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
-    constexpr std::uint32_t kTraceFeatures =
-        kShadingFeatures | kFireFirstOrder | kFireExact | kFireSpectral;
+    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -29,12 +28,12 @@ std::vector<ProgramSpec> all_program_specs() {
          {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {},
          kTraceFeatures},
-        // A non-convex stone's fire is traced per wavelength in a still view only.
+        // A non-convex stone's fire is traced per channel in a still view only.
         {"trace_non_convex",
          {"stone.vert"},
          {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"},
-         kShadingFeatures | kFireSpectral},
+         kShadingFeatures | kFireExact},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).

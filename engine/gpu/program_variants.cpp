@@ -8,8 +8,8 @@ namespace gem::gpu {
 
 std::vector<std::string> feature_defines(std::uint32_t features) {
     static constexpr const char* kDefines[kLightCountShift] = {
-        "SHADING_THESIS", "CUBE_AT_INFINITY", "FIRE_FIRST_ORDER", "FIRE_EXACT",
-        "TWO_VIEWS",      "ABSORBING",        "FIRE_SPECTRAL"};
+        "SHADING_THESIS", "CUBE_AT_INFINITY", "FIRE_FIRST_ORDER",
+        "FIRE_EXACT",     "TWO_VIEWS",        "ABSORBING"};
     std::vector<std::string> defines;
     for (std::uint32_t bit = 0; bit < std::size(kDefines); ++bit) {
         if ((features & (1u << bit)) != 0) defines.emplace_back(kDefines[bit]);

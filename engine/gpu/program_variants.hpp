@@ -28,10 +28,9 @@ enum ShaderFeature : std::uint32_t {
     kFireExact = 1u << 3,       // FIRE_EXACT: each channel traced at its own index (trace)
     kTwoViews = 1u << 4,        // TWO_VIEWS: a blend of two stored views (table)
     kAbsorbing = 1u << 5,       // ABSORBING: the body absorbs (Beer-Lambert, shading.glsl)
-    kFireSpectral = 1u << 6,    // FIRE_SPECTRAL: a still frame's wavelengths, each traced (trace)
 };
-// Bits 7-9 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
-inline constexpr std::uint32_t kLightCountShift = 7;
+// Bits 6-8 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
+inline constexpr std::uint32_t kLightCountShift = 6;
 inline constexpr std::uint32_t kLightCountBits = 7u << kLightCountShift;
 constexpr std::uint32_t light_count_feature(int lights) {
     return static_cast<std::uint32_t>(lights) << kLightCountShift;
@@ -43,9 +42,9 @@ inline std::uint32_t light_count_feature(const std::vector<Light>& lights) {
 constexpr int light_count_of(std::uint32_t features) {
     return static_cast<int>((features & kLightCountBits) >> kLightCountShift);
 }
-// Bits 10-19 hold a whole specular exponent h, 1 .. 1023 (SPECULAR_POWER h, specular.glsl);
+// Bits 9-18 hold a whole specular exponent h, 1 .. 1023 (SPECULAR_POWER h, specular.glsl);
 // 0: any other h, taken by pow at run time.
-inline constexpr std::uint32_t kSpecularPowerShift = 10;
+inline constexpr std::uint32_t kSpecularPowerShift = 9;
 inline constexpr int kMaxSpecularPower = 1023;
 inline constexpr std::uint32_t kSpecularPowerBits = static_cast<std::uint32_t>(kMaxSpecularPower)
                                                     << kSpecularPowerShift;

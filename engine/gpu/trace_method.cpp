@@ -103,39 +103,14 @@ std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch se
 }
 
 // The fire a draw compiles in. A still frame's wavelengths (a spectral picture's) replace a
-// convex stone's fire, whichever it is; a non-convex stone traces fire only with them and when
-// asked for spectral fire (trace.frag: its triangles make three wavelengths three times the
-// work). Spectral fire without them is exact.
+// convex stone's fire, whichever it is, traced exactly at them; a non-convex stone traces fire
+// only with them and when asked for spectral fire (trace.frag: its triangles make three
+// channels three times the work). Spectral fire without them is exact.
 std::uint32_t fire_features(TraceDispersion dispersion, bool convex, bool has_spectrum) {
     if (dispersion == TraceDispersion::none) return 0;
-    if (has_spectrum && (convex || dispersion == TraceDispersion::spectral)) return kFireSpectral;
+    if (has_spectrum && (convex || dispersion == TraceDispersion::spectral)) return kFireExact;
     if (!convex) return 0;
-    switch (dispersion) {
-        case TraceDispersion::none:
-            return 0;
-        case TraceDispersion::first_order:
-            return kFireFirstOrder;
-        case TraceDispersion::exact:
-        case TraceDispersion::spectral:
-            return kFireExact;
-    }
-    return 0;
-}
-
-// trace.frag's FIRE_SPECTRAL uniforms: the frame's wavelengths as the material's indices at
-// them, and their weights.
-void set_wavelength_uniforms(const Program& p, const FrameSpectrum& spectrum,
-                             const Material& material) {
-    float ior[kWavelengthsPerFrame] = {};
-    glm::vec3 weight[kWavelengthsPerFrame] = {};
-    for (int k = 0; k < spectrum.count; ++k) {
-        const SpectralSample& s = spectrum.samples[static_cast<std::size_t>(k)];
-        ior[k] = static_cast<float>(material.index(s.wavelength_nm));
-        weight[k] = glm::vec3(s.rgb_weight);
-    }
-    p.set("u_wavelength_count", spectrum.count);
-    p.set("u_wavelength_ior", ior, kWavelengthsPerFrame);
-    p.set("u_wavelength_weight", weight, kWavelengthsPerFrame);
+    return dispersion == TraceDispersion::first_order ? kFireFirstOrder : kFireExact;
 }
 
 }  // namespace
@@ -278,10 +253,12 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     p.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
     p.set("u_r_factor", static_cast<float>(trace.r_factor));
     p.set("u_t_factor", static_cast<float>(trace.t_factor));
-    p.set("u_ior_channel", channel_indices(frame.material));
-    if ((features & kFireSpectral) != 0) {
-        set_wavelength_uniforms(p, *frame.spectrum, frame.material);
-    }
+    // A still frame's own wavelengths where it has them, else the channels' dominant ones.
+    const glm::dvec3* nm = frame.spectrum;
+    p.set("u_ior_channel", nm != nullptr
+                               ? glm::vec3(frame.material.index(nm->x), frame.material.index(nm->y),
+                                           frame.material.index(nm->z))
+                               : channel_indices(frame.material));
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");

@@ -115,13 +115,9 @@ StillSpectrum::StillSpectrum(int frames) {
     for (int channel = 0; channel < 3; ++channel) {
         const ChannelScale scale(channel);
         for (int rank = 0; rank < frames; ++rank) {
-            FrameSpectrum& frame = frames_[static_cast<std::size_t>(by_inverse[rank])];
-            frame.count = 3;
-            SpectralSample& s = frame.samples[static_cast<std::size_t>(channel)];
             const int stratum = (rank + frames / 2) % frames;
-            s.wavelength_nm = scale.wavelength_at((stratum + 0.5) / frames);
-            s.rgb_weight = glm::dvec3(0.0);
-            s.rgb_weight[channel] = 1.0;
+            frames_[static_cast<std::size_t>(by_inverse[rank])][channel] =
+                scale.wavelength_at((stratum + 0.5) / frames);
         }
     }
 }

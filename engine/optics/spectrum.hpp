@@ -2,7 +2,6 @@
 // Spectral colour for dispersion ("fire"): the CIE 1931 colour matching functions and a set
 // of wavelength samples whose linear-RGB weights add up to white.
 
-#include <array>
 #include <cstddef>
 #include <vector>
 
@@ -51,30 +50,22 @@ SpectralSamples spectral_samples(int count, double jitter = 0.5);
 // channel, in radical-inverse order from the middle one (1/2, 0, 3/4, 1/4, ...), so the first
 // few frames already cover the spectrum evenly.
 //
-// A sample counts for its own channel only, with weight 1: every frame is white balanced, so a
-// frame's sub-pixel offset and its wavelengths do not mix (weights that differed from frame to
-// frame would tint the edges the offsets resolve: measured, ΔE00 1.2 on average on a diamond
-// without dispersion). The linear-sRGB functions' negative lobes are left out: they take a
-// little from a channel where light of another colour mixes in, and otherwise only push a
-// colour outside the gamut, which the display clips.
-inline constexpr int kWavelengthsPerFrame = 3;
-
-struct FrameSpectrum {
-    int count = 0;
-    std::array<SpectralSample, kWavelengthsPerFrame> samples{};  // the first `count`
-};
-
+// A wavelength counts for its own channel only: every frame is white balanced, so a frame's
+// sub-pixel offset and its wavelengths do not mix (weights that differed from frame to frame
+// would tint the edges the offsets resolve: measured, ΔE00 1.2 on average on a diamond without
+// dispersion). The linear-sRGB functions' negative lobes are left out: they take a little from
+// a channel where light of another colour mixes in, and otherwise only push a colour outside
+// the gamut, which the display clips.
 class StillSpectrum {
   public:
     // frames ≥ 1.
     explicit StillSpectrum(int frames);
     int frames() const { return static_cast<int>(frames_.size()); }
-    int per_frame() const { return frames_.front().count; }
-    // Frame `index`, 0 ≤ index < frames().
-    const FrameSpectrum& frame(int index) const { return frames_[static_cast<std::size_t>(index)]; }
+    // The wavelengths (nm) of frame `index` (0 ≤ index < frames()): red's, green's, blue's.
+    const glm::dvec3& frame(int index) const { return frames_[static_cast<std::size_t>(index)]; }
 
   private:
-    std::vector<FrameSpectrum> frames_;
+    std::vector<glm::dvec3> frames_;
 };
 
 }  // namespace gem

@@ -57,12 +57,11 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
             ++built;
         }
     }
-    // table and table_non_convex test five switches (32 each), trace six (64),
-    // trace_non_convex four (16), each with 0 .. 4 lights; the ring and phong, the light count
-    // only. Every one of these but the ring's, with 1 .. 4 lights, once more with a whole
-    // specular power.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 64 + 16 + 1 + 1) +
-                         4 * (32 + 32 + 64 + 16 + 1));
+    // table, table_non_convex and trace test five switches (32 each), trace_non_convex four
+    // (16), each with 0 .. 4 lights; the ring and phong, the light count only. Every one of
+    // these but the ring's, with 1 .. 4 lights, once more with a whole specular power.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 32 + 16 + 1 + 1) +
+                         4 * (32 + 32 + 32 + 16 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }
@@ -75,8 +74,6 @@ TEST(GpuPrograms, FeatureDefinesFollowTheBits) {
               (std::vector<std::string>{"CUBE_AT_INFINITY", "FIRE_FIRST_ORDER", "FIRE_EXACT"}));
     EXPECT_EQ(gpu::feature_defines(gpu::kTwoViews | gpu::light_count_feature(3)),
               (std::vector<std::string>{"TWO_VIEWS", "LIGHT_COUNT 3"}));
-    EXPECT_EQ(gpu::feature_defines(gpu::kFireSpectral | gpu::light_count_feature(1)),
-              (std::vector<std::string>{"FIRE_SPECTRAL", "LIGHT_COUNT 1"}));
     EXPECT_EQ(gpu::light_count_of(gpu::kThesisShading | gpu::light_count_feature(4)), 4);
     EXPECT_EQ(gpu::feature_defines(gpu::light_count_feature(2) | gpu::specular_power_feature(60)),
               (std::vector<std::string>{"LIGHT_COUNT 2", "SPECULAR_POWER 60"}));

@@ -10,8 +10,8 @@
 // of a mirror-symmetric stone and testing the few planes there, also constants
 // (trace/folded_exit.hpp, the CPU twin). trace_method.cpp measures which is fastest.
 // NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that may
-// re-enter through the cleft wait on a small fixed stack as on the CPU; its fire is traced
-// only with FIRE_SPECTRAL.
+// re-enter through the cleft wait on a small fixed stack as on the CPU; it traces fire only
+// exactly (trace_method.cpp asks for it only in a still view's frames).
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 out vec4 o_colour;
@@ -23,18 +23,13 @@ uniform float u_min_weight;
 uniform int u_thesis_weights;  // 1: constant R/T factors; 0: exact Fresnel
 uniform float u_r_factor;
 uniform float u_t_factor;
-uniform vec3 u_ior_channel;  // n at the channels' dominant wavelengths
+// n at each channel's wavelength: its dominant one, or a still frame's own
+// (optics/spectrum.hpp, StillSpectrum)
+uniform vec3 u_ior_channel;
 const float kAir = 1.0;
 // Fire (compiled in, program_variants.hpp): none by default; FIRE_FIRST_ORDER moves exit
 // directions by d(direction)/dn (n(channel) - n) as the table method does; FIRE_EXACT traces
-// every channel at its own index; FIRE_SPECTRAL traces each of a still frame's wavelengths
-// (optics/spectrum.hpp, StillSpectrum) at its own index and adds its colour with its
-// linear-RGB weight.
-#ifdef FIRE_SPECTRAL
-uniform int u_wavelength_count;
-uniform float u_wavelength_ior[3];  // kWavelengthsPerFrame
-uniform vec3 u_wavelength_weight[3];
-#endif
+// every channel at its own index.
 #ifdef FIRE_FIRST_ORDER
 const bool kFirstOrder = true;
 #else
@@ -518,43 +513,33 @@ void main() {
     float facing = dot(n, direction);
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
-#ifdef FIRE_SPECTRAL
-    // Each wavelength refracted in at its own index; what each reflects at the entry is
-    // added up first, so the reflection is shaded once.
+    vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
+#ifdef FIRE_EXACT
+    // Each channel reflected and refracted at its own index; the reflection shaded once.
+    vec3 reflected;
     vec3 colour = vec3(0.0);
-    vec3 reflected = vec3(0.0);
-    for (int k = 0; k < u_wavelength_count; ++k) {
-        float ior = u_wavelength_ior[k];
+    for (int c = 0; c < 3; ++c) {
+        float ior = u_ior_channel[c];
         vec2 s = split_weight(-dot(direction, n), kAir, ior);
-        reflected += u_wavelength_weight[k] * s.x;
+        reflected[c] = s.x;
         vec3 d;
         if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
 #ifdef NON_CONVEX
-            colour += u_wavelength_weight[k] * follow_branches(entry, d, s.y, facet, ior);
+            colour[c] += follow_branches(entry, d, s.y, facet, ior)[c];
 #else
-            colour += u_wavelength_weight[k] * follow_inside(entry, d, vec3(0.0), facet, s.y, ior);
+            colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior)[c];
 #endif
         }
     }
     colour += reflected * shade_reflected(entry, reflect(direction, n), n, 1.0);
 #else
-    vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, split.x);
     vec3 inward;
     bool refracted = refract_ray(direction, n, kAir, u_ior, inward);
 #ifdef NON_CONVEX
     if (refracted && split.y > 0.0) colour += follow_branches(entry, inward, split.y, facet, u_ior);
-#elif defined(FIRE_EXACT)
-    // A convex stone holds one branch: the internal reflection; exit rays cannot come back.
-    for (int c = 0; c < 3; ++c) {
-        float ior = u_ior_channel[c];
-        vec2 s = split_weight(-dot(direction, n), kAir, ior);
-        vec3 d;
-        if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
-            colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior)[c];
-        }
-    }
 #else
+    // A convex stone holds one branch: the internal reflection; exit rays cannot come back.
     if (refracted && split.y > 0.0) {
         // d(inward)/dn at the entry: eta = 1/n, d eta/dn = -eta^2.
         float eta = kAir / u_ior;
