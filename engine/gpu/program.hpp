@@ -46,13 +46,6 @@ class Program {
     void set(const char* name, const glm::vec2& v) const { glUniform2fv(uniform(name), 1, &v.x); }
     void set(const char* name, const glm::vec3& v) const { glUniform3fv(uniform(name), 1, &v.x); }
     void set(const char* name, const glm::vec4& v) const { glUniform4fv(uniform(name), 1, &v.x); }
-    // Arrays: `count` elements from the first.
-    void set(const char* name, const float* v, int count) const {
-        glUniform1fv(uniform(name), count, v);
-    }
-    void set(const char* name, const glm::vec3* v, int count) const {
-        glUniform3fv(uniform(name), count, &v->x);
-    }
     void set(const char* name, const glm::mat2& m) const {
         glUniformMatrix2fv(uniform(name), 1, GL_FALSE, &m[0][0]);
     }
