@@ -1,7 +1,8 @@
 // The shopper's still picture against the exact spectral reference, printed, not asserted
-// (docs/accuracy.md, "The still picture"). The scenes are gemrender's default scene (the
-// studio, its lights, physical shading) with the loose Tolkowsky diamond at elevation 40°,
-// azimuth 13.7° and face-up (384²), the oval sapphire at 55° and the heart ruby at 65° (256²).
+// (docs/accuracy.md, "The still picture against the spectral truth"). The scenes are
+// gemrender's default scene (the studio, its lights, physical shading) with the loose
+// Tolkowsky diamond at elevation 40°, azimuth 13.7° and face-up (384²), the oval sapphire at
+// 55° and the heart ruby at 65° (256²).
 // The reference is the CPU tracer at depth 64, 16 samples a pixel, 12 wavelengths; every
 // picture goes through the same tone curve (no glare) and is compared as 8-bit sRGB, mean and
 // 99th percentile CIEDE2000 over the stone's pixels (render/image_error.hpp).
