@@ -7,6 +7,7 @@
 
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "util/radical_inverse.hpp"
 
 namespace gem::gpu {
 
@@ -124,15 +125,8 @@ glm::dvec2 HdrPicture::jitter_ndc() const {
     // The first frame of a still view is the moving view's own (no offset): the picture does
     // not jump when a turn stops. Then Halton (2, 3), centred on the pixel.
     if (still_index_ <= 0) return glm::dvec2(0.0);
-    const auto halton = [](int i, int base) {
-        double f = 1.0, r = 0.0;
-        for (; i > 0; i /= base) {
-            f /= base;
-            r += f * (i % base);
-        }
-        return r;
-    };
-    const glm::dvec2 offset_px(halton(still_index_, 2) - 0.5, halton(still_index_, 3) - 0.5);
+    const auto i = static_cast<unsigned>(still_index_);
+    const glm::dvec2 offset_px(radical_inverse(i, 2) - 0.5, radical_inverse(i, 3) - 0.5);
     return offset_px * glm::dvec2(2.0 / width_, 2.0 / height_);
 }
 

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "optics/colour.hpp"
+#include "util/radical_inverse.hpp"
 
 namespace gem {
 
@@ -62,13 +63,6 @@ class ChannelScale {
     std::vector<double> cumulative_;
 };
 
-// The base-2 radical inverse of i (van der Corput): 0, 1/2, 1/4, 3/4, 1/8, ...
-double radical_inverse(unsigned i) {
-    double f = 0.5, r = 0.0;
-    for (; i > 0; i >>= 1, f *= 0.5) r += f * (i & 1u);
-    return r;
-}
-
 }  // namespace
 
 glm::dvec3 cie1931_xyz(double wavelength_nm) {
@@ -108,8 +102,8 @@ StillSpectrum::StillSpectrum(int frames) {
     std::vector<int> by_inverse(static_cast<std::size_t>(frames));
     for (int f = 0; f < frames; ++f) by_inverse[static_cast<std::size_t>(f)] = f;
     std::stable_sort(by_inverse.begin(), by_inverse.end(), [](int a, int b) {
-        return radical_inverse(static_cast<unsigned>(a)) <
-               radical_inverse(static_cast<unsigned>(b));
+        return radical_inverse(static_cast<unsigned>(a), 2) <
+               radical_inverse(static_cast<unsigned>(b), 2);
     });
     frames_.resize(static_cast<std::size_t>(frames));
     for (int channel = 0; channel < 3; ++channel) {

@@ -513,7 +513,6 @@ void main() {
     float facing = dot(n, direction);
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
-    vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
 #ifdef FIRE_EXACT
     // Each channel reflected and refracted at its own index; the reflection shaded once.
     vec3 reflected;
@@ -533,6 +532,7 @@ void main() {
     }
     colour += reflected * shade_reflected(entry, reflect(direction, n), n, 1.0);
 #else
+    vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, split.x);
     vec3 inward;
     bool refracted = refract_ray(direction, n, kAir, u_ior, inward);
