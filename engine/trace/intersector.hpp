@@ -1,6 +1,7 @@
 #pragma once
-// Where a ray next crosses a stone's surface. Two implementations: half-space clipping for
-// convex stones (convex_intersector) and a triangle BVH for any closed mesh (bvh_intersector).
+// Where a ray next crosses a stone's surface. Three implementations: half-space clipping for
+// convex stones (convex_intersector), a triangle BVH for any closed mesh (bvh_intersector) and
+// a non-convex stone's convex pieces (pieces_intersector, the trace shader's twin).
 // Private to the tracer, its tests and benchmarks.
 
 #include <cstdint>
@@ -10,6 +11,7 @@
 #include <glm/glm.hpp>
 
 #include "geometry/stone.hpp"
+#include "trace/convex_pieces.hpp"
 
 namespace gem {
 
@@ -44,5 +46,6 @@ class Intersector {
 std::unique_ptr<Intersector> make_intersector(const Stone& stone);
 std::unique_ptr<Intersector> make_convex_intersector(const Stone& stone);
 std::unique_ptr<Intersector> make_bvh_intersector(const Stone& stone);
+std::unique_ptr<Intersector> make_pieces_intersector(const Stone& stone, ConvexPieces pieces);
 
 }  // namespace gem

@@ -1,0 +1,119 @@
+// A non-convex stone traced as its convex pieces (trace/convex_pieces.hpp): the CPU twin of the
+// trace shader's PIECES search, which the tests hold against the triangle BVH.
+
+#include <cassert>
+#include <limits>
+#include <vector>
+
+#include "render/camera.hpp"
+#include "trace/convex_pieces.hpp"
+#include "trace/intersector.hpp"
+
+namespace gem {
+namespace {
+
+constexpr double kInf = std::numeric_limits<double>::infinity();
+
+// A plane bounding a piece: a facet, or a cut (kNoFacet) the ray passes through unchanged.
+struct Bound {
+    Plane plane;
+    std::uint32_t facet = kNoFacet;
+};
+
+class PiecesIntersector final : public Intersector {
+  public:
+    PiecesIntersector(const Stone& stone, ConvexPieces pieces)
+        : pieces_(std::move(pieces)), on_cut_(1e-9 * bounding_radius(stone.vertices)) {
+        for (const ConvexPieces::Piece& piece : pieces_.pieces()) {
+            std::vector<Bound> bounds;
+            for (std::uint32_t f : piece.facets) bounds.push_back({stone.facets[f].plane, f});
+            for (const Plane& cut : piece.cuts) bounds.push_back({cut, kNoFacet});
+            bounds_.push_back(std::move(bounds));
+        }
+    }
+
+    // A convex piece's entries, each by the slab method; one through a cut is not an entry
+    // into the stone (the piece beyond the cut gives the ray's earlier one). A ray starting on
+    // a piece's surface and leaving it has no stretch inside: it does not enter there.
+    bool next_entry(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
+                    SurfaceHit& hit) const override {
+        double best = kInf;
+        std::uint32_t entry_facet = kNoFacet;
+        for (const std::vector<Bound>& bounds : bounds_) {
+            double t_in = -kInf;
+            double t_out = kInf;
+            const Bound* entry = nullptr;
+            bool missed = false;
+            for (const Bound& b : bounds) {
+                const double facing = glm::dot(b.plane.n, direction);
+                const double inside_by = b.plane.d - glm::dot(b.plane.n, origin);
+                if (facing < 0.0 && inside_by / facing > t_in) {
+                    t_in = inside_by / facing;
+                    entry = &b;
+                } else if (facing > 0.0) {
+                    t_out = std::min(t_out, inside_by / facing);
+                } else if (facing == 0.0 && inside_by < 0.0) {
+                    missed = true;
+                }
+            }
+            if (missed || entry == nullptr || entry->facet == kNoFacet ||
+                entry->facet == from_facet || t_in < -on_cut_ || t_out - t_in <= on_cut_ ||
+                t_in >= best) {
+                continue;
+            }
+            best = t_in;
+            entry_facet = entry->facet;
+        }
+        if (entry_facet == kNoFacet) return false;
+        hit.t = std::max(best, 0.0);
+        hit.point = origin + hit.t * direction;
+        hit.facet = entry_facet;
+        return true;
+    }
+
+    // The nearest plane ahead in the piece holding the origin; through a cut, on in the piece
+    // beyond. Each crossing enters a piece further along the ray, so there are fewer crossings
+    // than pieces.
+    bool next_exit(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
+                   SurfaceHit& hit) const override {
+        int piece = pieces_.locate(origin, direction, on_cut_);
+        for (std::size_t crossing = 0; crossing < bounds_.size(); ++crossing) {
+            double t_best = kInf;
+            const Bound* exit = nullptr;
+            for (const Bound& b : bounds_[static_cast<std::size_t>(piece)]) {
+                if (b.facet != kNoFacet && b.facet == from_facet) continue;
+                const double facing = glm::dot(b.plane.n, direction);
+                if (facing <= 0.0) continue;
+                const double t = std::max((b.plane.d - glm::dot(b.plane.n, origin)) / facing, 0.0);
+                if (t < t_best) {
+                    t_best = t;
+                    exit = &b;
+                }
+            }
+            if (exit == nullptr) return false;
+            if (exit->facet != kNoFacet) {
+                hit.t = t_best;
+                hit.point = origin + t_best * direction;
+                hit.facet = exit->facet;
+                return true;
+            }
+            piece = pieces_.locate(origin + t_best * direction, direction, on_cut_);
+        }
+        return false;
+    }
+
+    bool can_reenter() const override { return true; }
+
+  private:
+    ConvexPieces pieces_;
+    double on_cut_;
+    std::vector<std::vector<Bound>> bounds_;  // per piece
+};
+
+}  // namespace
+
+std::unique_ptr<Intersector> make_pieces_intersector(const Stone& stone, ConvexPieces pieces) {
+    return std::make_unique<PiecesIntersector>(stone, std::move(pieces));
+}
+
+}  // namespace gem
