@@ -28,6 +28,9 @@ struct FrameSetup {
     ShadingSettings shading;
     TraceSettings trace;  // trace: depth, weights, threshold
     TraceDispersion trace_dispersion = TraceDispersion::none;
+    // trace: a non-convex stone through its triangles, not its convex pieces (a benchmark's
+    // comparison; trace_method.hpp).
+    bool trace_triangles = false;
     TableOptions table;
     // What surrounds everything; must outlive the renderer (an orthographic frame's background
     // is its radiance along the view).

@@ -4,6 +4,7 @@
 #include <cassert>
 #include <chrono>
 #include <cstdio>
+#include <functional>
 #include <limits>
 #include <optional>
 
@@ -15,6 +16,7 @@
 #include "gpu/render_target.hpp"
 #include "gpu/stone_method.hpp"
 #include "render/camera.hpp"
+#include "trace/convex_pieces.hpp"
 #include "trace/folded_exit.hpp"
 
 namespace gem::gpu {
@@ -85,6 +87,77 @@ std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fo
     return defines;
 }
 
+// One plane's arguments to SLAB_BOUND: its facet (-1 for a cut) and the plane.
+std::string bound_arguments(int facet, const Plane& p) {
+    return "(" + std::to_string(facet) + ", " + plane_arguments(p) + ")";
+}
+
+// trace.frag's PIECES constants (trace/convex_pieces.hpp).
+std::vector<std::string> pieces_defines(const Stone& stone, const ConvexPieces& split) {
+    const auto& pieces = split.pieces();
+    // The partition as nested selects: below_cut(p, d, n, d) ? below : above.
+    std::function<std::string(int)> locate = [&](int child) -> std::string {
+        if (child < 0) return std::to_string(-1 - child);
+        const ConvexPieces::Node& node = split.nodes()[static_cast<std::size_t>(child)];
+        return "(below_cut(p, d, vec3(" + glsl_float(node.cut.n.x) + ", " +
+               glsl_float(node.cut.n.y) + ", " + glsl_float(node.cut.n.z) + "), " +
+               glsl_float(node.cut.d) + ") ? " + locate(node.below) + " : " + locate(node.above) +
+               ")";
+    };
+    auto slab = [&](const ConvexPieces::Piece& piece) {
+        std::string text;
+        for (std::uint32_t f : piece.facets) {
+            text += " SLAB_BOUND" + bound_arguments(static_cast<int>(f), stone.facets[f].plane);
+        }
+        for (const Plane& cut : piece.cuts) text += " SLAB_BOUND" + bound_arguments(-1, cut);
+        return text;
+    };
+    // Each plane once, with the pieces it bounds as bits: a facet may bound several, a cut
+    // bounds one from each side, facing opposite ways.
+    std::vector<int> masks(stone.facets.size(), 0);
+    std::string exits = "PIECE_BOUNDS";
+    std::string entries = "PIECE_ENTRY";
+    for (std::size_t k = 0; k < pieces.size(); ++k) {
+        const std::string index = std::to_string(k);
+        for (std::uint32_t f : pieces[k].facets) masks[f] |= 1 << k;
+        for (const Plane& cut : pieces[k].cuts) {
+            exits +=
+                " PIECE_BOUND(-1, " + std::to_string(1 << k) + ", " + plane_arguments(cut) + ")";
+        }
+        entries += " if (left != " + index +
+                   ") { float t_in = -1e30; float t_out = 1e30; int enter = -1;" + slab(pieces[k]) +
+                   " SLAB_END(" + index + ") }";
+    }
+    for (std::size_t f = 0; f < masks.size(); ++f) {
+        if (masks[f] == 0) continue;
+        exits += " PIECE_BOUND(" + std::to_string(f) + ", " + std::to_string(masks[f]) + ", " +
+                 plane_arguments(stone.facets[f].plane) + ")";
+    }
+    std::string walls;
+    for (std::uint32_t f : split.pocket_walls()) {
+        walls += (walls.empty() ? "" : " || ") + ("facet == " + std::to_string(f));
+    }
+    return {"PIECES",
+            "PIECE_POCKET_WALL " + (walls.empty() ? "false" : "(" + walls + ")"),
+            "PIECE_COUNT " + std::to_string(pieces.size()),
+            "PIECE_LOCATE " + locate(split.nodes().empty() ? -1 : 0),
+            exits,
+            entries};
+}
+
+// A non-convex stone's programs: its convex pieces where it splits into few (and `search`
+// does not ask for the triangles), else its triangles.
+ProgramVariants non_convex_programs(const Stone& stone, ExitSearch search, ExitSearch& used) {
+    if (search != ExitSearch::triangles) {
+        if (auto split = ConvexPieces::split(stone)) {
+            used = ExitSearch::pieces;
+            return ProgramVariants("trace_non_convex", pieces_defines(stone, *split));
+        }
+    }
+    used = ExitSearch::triangles;
+    return ProgramVariants("trace_non_convex", {});
+}
+
 // The program variants of an exit search; none for folding a stone that does not fold.
 std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch search) {
     switch (search) {
@@ -97,6 +170,8 @@ std::optional<ProgramVariants> convex_programs(const Stone& stone, ExitSearch se
         }
         case ExitSearch::walk:
         case ExitSearch::measured:
+        case ExitSearch::pieces:  // a non-convex stone's searches: a convex stone walks
+        case ExitSearch::triangles:
             break;
     }
     return ProgramVariants("trace", {});
@@ -139,6 +214,10 @@ const char* to_string(ExitSearch search) {
             return "folded into one wedge";
         case ExitSearch::measured:
             return "measured";
+        case ExitSearch::pieces:
+            return "convex pieces";
+        case ExitSearch::triangles:
+            return "every triangle";
     }
     return "?";
 }
@@ -155,8 +234,11 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     if (!geometry) return Error{"trace: " + geometry.error()};
     const double radius = bounding_radius(stone.vertices);
     if (!stone.convex) {
-        return TraceMethod(std::move(geometry).value(), ProgramVariants("trace_non_convex", {}),
-                           false);
+        ExitSearch used = ExitSearch::triangles;
+        auto programs = non_convex_programs(stone, search, used);
+        TraceMethod m(std::move(geometry).value(), std::move(programs), false);
+        m.search_ = used;
+        return m;
     }
     if (search != ExitSearch::measured) {
         auto programs = convex_programs(stone, search);
@@ -276,10 +358,12 @@ namespace {
 class TraceStones final : public StoneMethod {
   public:
     TraceStones(const FrameSetup& setup, Program depth)
-        : trace_(setup.trace), depth_(std::move(depth)) {}
+        : trace_(setup.trace),
+          search_(setup.trace_triangles ? ExitSearch::triangles : ExitSearch::measured),
+          depth_(std::move(depth)) {}
 
     Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
-        auto made = TraceMethod::make(stone);
+        auto made = TraceMethod::make(stone, stone.convex ? ExitSearch::measured : search_);
         if (!made) return Error{made.error()};
         methods_.push_back(std::make_unique<TraceMethod>(std::move(made).value()));
         convex_.push_back(stone.convex);
@@ -324,15 +408,19 @@ class TraceStones final : public StoneMethod {
     }
 
     std::string describe() const override {
-        if (!convex_.front()) return "the first stone's triangles tested (not convex)";
         const TraceMethod& first = *methods_.front();
+        if (!convex_.front()) {
+            return std::string("the first stone not convex: exits by ") +
+                   to_string(first.exit_search());
+        }
         return std::string("exits by ") + to_string(first.exit_search()) +
                " (64x64 test: " + first.measurement() + ")";
     }
 
   private:
     TraceSettings trace_;
-    Program depth_;  // stone_depth
+    ExitSearch search_;  // a non-convex kind's
+    Program depth_;      // stone_depth
     std::vector<std::unique_ptr<TraceMethod>> methods_;
     std::vector<bool> convex_;
     std::vector<StoneModel> models_;

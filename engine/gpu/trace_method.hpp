@@ -2,7 +2,8 @@
 // The trace method (docs/design.md, "Methods side by side"): exact tracing per fragment of the
 // stone pass, with the exact tracer's rules (trace/tracer.hpp: depth, weight threshold,
 // Fresnel or thesis R/T weights), shaded with shading.glsl. No tables, so it is exact at every
-// view. Non-convex stones test their triangles. Convex stones find each exit one of three
+// view. A non-convex stone is traced as its convex pieces (trace/convex_pieces.hpp), or by
+// its triangles where it does not split into few. Convex stones find each exit one of three
 // ways, all exact (trace.frag): by walking the facets from a first guess (a handful of planes
 // read from the uniform block per bounce; trace/facet_walk.hpp), by testing every plane,
 // written into the shader as constants (no reads, no divergence), or, for a stone with two
@@ -38,16 +39,18 @@ enum class TraceDispersion {
 // "none", "first-order", "exact", "spectral": for logs and benchmark tables.
 const char* to_string(TraceDispersion fire);
 
-// How a convex stone's exits are found.
-enum class ExitSearch { walk, constants, folded, measured };
+// How exits are found: a convex stone's three searches (or the fastest of them, measured), and
+// a non-convex stone's two: its convex pieces (trace/convex_pieces.hpp), where it splits into
+// few, or its triangles.
+enum class ExitSearch { walk, constants, folded, measured, pieces, triangles };
 const char* to_string(ExitSearch search);
 
 class TraceMethod {
   public:
-    // Uploads the stone (StoneGeometry) and builds the program (non-convex, or the convex
-    // variant `search` names: an error for `folded` on a stone that does not fold; `measured`
-    // builds each and keeps the fastest on a 64×64 test picture, drawn off screen; the caller's
-    // framebuffer and viewport are kept).
+    // Uploads the stone (StoneGeometry) and builds the program (the convex variant `search`
+    // names: an error for `folded` on a stone that does not fold; `measured` builds each and
+    // keeps the fastest on a 64×64 test picture, drawn off screen; the caller's framebuffer
+    // and viewport are kept. A non-convex stone's pieces unless `search` is `triangles`).
     static Result<TraceMethod> make(const Stone& stone, ExitSearch search = ExitSearch::measured);
     // Draws the stone layer for `frame` into the bound framebuffer (viewport set by caller).
     // `trace` gives depth, weight threshold, weight model (fresnel or thesis R/T factors) and
@@ -58,11 +61,12 @@ class TraceMethod {
     // stone_depth program) in use.
     void draw_depth(const StoneFrame& frame, const Program& depth) const;
 
-    // The convex search in use (walk for a non-convex stone, which uses none), and what the
-    // measurement gave (ms for the test picture; 0 when not measured), also as a log phrase.
+    // The search in use, and what the measurement gave a convex stone's (ms for the test
+    // picture; 0 when not measured), also as a log phrase.
     ExitSearch exit_search() const { return search_; }
     double measured_ms(ExitSearch search) const {
-        return search == ExitSearch::measured ? 0.0 : measured_ms_[static_cast<int>(search)];
+        const int i = static_cast<int>(search);
+        return i < 3 ? measured_ms_[i] : 0.0;
     }
     std::string measurement() const;
 

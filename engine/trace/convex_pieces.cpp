@@ -171,6 +171,20 @@ class Splitter {
     double tol_;
 };
 
+// The facets with a corner of the stone outside their plane: off its convex hull.
+std::vector<std::uint32_t> walls_of_pockets(const Stone& stone, double tol) {
+    std::vector<std::uint32_t> walls;
+    for (std::uint32_t f = 0; f < stone.facets.size(); ++f) {
+        for (const glm::dvec3& v : stone.vertices) {
+            if (stone.facets[f].plane.signed_distance(v) > tol) {
+                walls.push_back(f);
+                break;
+            }
+        }
+    }
+    return walls;
+}
+
 // The planes a split may cut along: the stone's mirrors (its symmetry's reflections, and the
 // coordinate planes through its centre, which a design's mirrors usually are) and its reflex
 // facets' planes. Duplicates are dropped.
@@ -200,16 +214,11 @@ std::vector<Plane> candidate_cuts(const Stone& stone, double tol) {
         n[axis] = 1.0;
         add(Plane{n, 0.0});
     }
-    for (const Facet& f : stone.facets) {
+    for (std::uint32_t f : walls_of_pockets(stone, tol)) {
         // A stone with more pocket walls than this needs more pieces than a split may have;
         // the cap bounds the search (candidates to the power of the cuts) on such a stone.
         if (candidates.size() >= kMaxCandidates) break;
-        for (const glm::dvec3& v : stone.vertices) {
-            if (f.plane.signed_distance(v) > tol) {
-                add(f.plane);
-                break;
-            }
-        }
+        add(stone.facets[f].plane);
     }
     return candidates;
 }
@@ -227,6 +236,7 @@ std::optional<ConvexPieces> ConvexPieces::split(const Stone& stone) {
     ConvexPieces pieces;
     pieces.nodes_ = std::move(partition->nodes);
     pieces.pieces_ = std::move(partition->pieces);
+    pieces.pocket_walls_ = walls_of_pockets(stone, tol);
     return pieces;
 }
 

@@ -56,6 +56,9 @@ class ConvexPieces {
 
     const std::vector<Node>& nodes() const { return nodes_; }
     const std::vector<Piece>& pieces() const { return pieces_; }
+    // The facets off the stone's convex hull, with a corner outside their plane: a ray leaving
+    // through any other leaves the hull there and never meets the stone again.
+    const std::vector<std::uint32_t>& pocket_walls() const { return pocket_walls_; }
 
     // The piece holding p, a point of the stone; on a cut (within `on_cut`, mm), the piece its
     // direction d points into.
@@ -64,6 +67,7 @@ class ConvexPieces {
   private:
     std::vector<Node> nodes_;
     std::vector<Piece> pieces_;
+    std::vector<std::uint32_t> pocket_walls_;
 };
 
 }  // namespace gem

@@ -10,7 +10,7 @@
 // frame-by-frame ratios, each against the phong frame drawn just before (a busy machine slows
 // both alike). The table method reads a database of the
 // diamond at 256/1024 px every 10°, traced to the same depth. Last, the heart in ruby (not
-// convex: trace tests its triangles instead of walking facets) beside phong.
+// convex) beside phong: traced as its two convex pieces and through its triangles.
 //
 //   bench_gpu [--frames N] [--quick] [--only TEXT] [--methods TEXT]
 // --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
@@ -87,6 +87,7 @@ struct Case {
     bool blend = false;
     int depth = kTraceDepth;
     TraceDispersion dispersion = TraceDispersion::none;
+    bool triangles = false;  // a non-convex stone's triangles, not its convex pieces
 };
 
 gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const gem::MetalMesh& ring,
@@ -146,6 +147,7 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
                             {{-30.0, 50.0, -20.0}, false, {1.5, 1.5, 1.5}}};
     setup.trace.max_depth = c.depth;
     setup.trace_dispersion = c.dispersion;
+    setup.trace_triangles = c.triangles;
     setup.table.blend = c.blend;
     setup.environment = &environment;
     if (v.ring) setup.ring = &ring;
@@ -249,11 +251,14 @@ int main(int argc, char** argv) {
         std::vector<View> views;
         std::vector<Case> cases;
     };
-    std::vector<Subject> subjects = {{&stone.value(), views, cases},
-                                     {&heart.value(),
-                                      {{"heart 1024² z 1", 1024, 1024, 1.0, 40.0, false},
-                                       {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
-                                      {{"phong", "phong"}, {"trace depth 7 (mesh)", "trace"}}}};
+    std::vector<Subject> subjects = {
+        {&stone.value(), views, cases},
+        {&heart.value(),
+         {{"heart 1024² z 1", 1024, 1024, 1.0, 40.0, false},
+          {"heart 1024² z 0.5", 1024, 1024, 0.5, 40.0, false}},
+         {{"phong", "phong"},
+          {"trace depth 7", "trace"},
+          {"trace 7 triangles", "trace", false, kTraceDepth, TraceDispersion::none, true}}}};
     if (quick) subjects.resize(1);
     for (Subject& st : subjects) {
         std::erase_if(st.cases, [&](const Case& c) {

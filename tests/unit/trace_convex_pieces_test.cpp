@@ -6,6 +6,7 @@
 // that leave the stone and may come back through its cleft.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <map>
 #include <random>
 #include <set>
@@ -94,6 +95,7 @@ class Checker {
         : s_(s),
           triangles_(make_bvh_intersector(s)),
           pieces_(make_pieces_intersector(s, pieces)),
+          walls_(pieces.pocket_walls()),
           tol_(1e-9 * bounding_radius(s.vertices)) {}
 
     void exit(const glm::dvec3& o, const glm::dvec3& d, std::uint32_t from) {
@@ -107,6 +109,12 @@ class Checker {
     void entry(const glm::dvec3& o, const glm::dvec3& d, std::uint32_t from) {
         SurfaceHit expected, got;
         const bool found = triangles_->next_entry(o, d, from, expected);
+        // Only a pocket's wall sends a ray back in (the shader skips the search otherwise).
+        const bool wall = std::find(walls_.begin(), walls_.end(), from) != walls_.end();
+        if (found && from != kNoFacet && !wall && ++tally.disagreements <= 5) {
+            ADD_FAILURE() << s_.name << ": a ray leaving through facet " << from
+                          << ", not a pocket's wall, came back in through " << expected.facet;
+        }
         const bool by_pieces = pieces_->next_entry(o, d, from, got);
         ++tally.entries;
         tally.reentries += found;
@@ -131,6 +139,7 @@ class Checker {
     const Stone& s_;
     std::unique_ptr<Intersector> triangles_;
     std::unique_ptr<Intersector> pieces_;
+    std::vector<std::uint32_t> walls_;
     double tol_;
 };
 
@@ -269,6 +278,8 @@ TEST(ConvexPieces, TheHeartSplitsInTwoAlongItsMirror) {
     // x = 0 (either way round): the heart is built as two mirrored convex halves.
     EXPECT_NEAR(std::abs(pieces->nodes()[0].cut.n.x), 1.0, 1e-12);
     EXPECT_NEAR(pieces->nodes()[0].cut.d, 0.0, 1e-12);
+    // The cleft's walls: its girdle, bezel and main facets, either side.
+    EXPECT_EQ(pieces->pocket_walls().size(), 6u);
     for (const ConvexPieces::Piece& piece : pieces->pieces()) {
         EXPECT_EQ(piece.cuts.size(), 1u);
         EXPECT_LT(piece.facets.size(), s.facets.size());

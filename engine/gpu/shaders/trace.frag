@@ -9,9 +9,10 @@
 // written into the shader as constants, or with EXIT_FOLDED by folding the ray into one wedge
 // of a mirror-symmetric stone and testing the few planes there, also constants
 // (trace/folded_exit.hpp, the CPU twin). trace_method.cpp measures which is fastest.
-// NON_CONVEX: the triangles, brute force (a heart has a few hundred), and exit rays that may
-// re-enter through the cleft wait on a small fixed stack as on the CPU; it traces fire only
-// exactly (trace_method.cpp asks for it only in a still view's frames).
+// NON_CONVEX: the stone's convex pieces with PIECES (trace/convex_pieces.hpp), else its
+// triangles, brute force (a heart has a few hundred); exit rays that may re-enter through the
+// cleft wait on a small fixed stack as on the CPU; it traces fire only exactly
+// (trace_method.cpp asks for it only in a still view's frames).
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 out vec4 o_colour;
@@ -364,6 +365,101 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
 // leaves straight through the neighbouring facet is caught there (bvh_intersector.cpp uses
 // 1e-9 of the diagonal in double; float needs more).
 const float kBehind = 1e-5;
+
+#ifdef PIECES
+// The stone as convex pieces (trace/convex_pieces.hpp; pieces_intersector.cpp is the CPU twin),
+// their planes as constants: trace_method.cpp writes PIECE_COUNT, PIECE_LOCATE (the partition
+// as nested selects of below_cut), PIECE_BOUNDS (below; id a plane's facet or -1 for a cut),
+// PIECE_POCKET_WALL and PIECE_ENTRY (for each piece k but `left`, its SLAB_BOUNDs and
+// SLAB_END(k)).
+// A point this near a cut (mm) is on it: it goes where its direction points.
+const float kOnCut = 1e-5;
+
+bool below_cut(vec3 p, vec3 d, vec3 n, float w) {
+    float s = dot(n, p) - w;
+    return s < -kOnCut || (s <= kOnCut && dot(n, d) <= 0.0);
+}
+
+int entry_piece(vec3 p, vec3 d) {
+    return PIECE_LOCATE;
+}
+
+// A ray leaving through a facet on the stone's convex hull leaves the hull there, and a convex
+// solid is not met again: only the pockets' walls (PIECE_POCKET_WALL, a test of `facet`) may
+// send a ray back in.
+bool may_reenter(int facet) {
+    return PIECE_POCKET_WALL;
+}
+
+// Every plane once (PIECE_BOUNDS: one PIECE_BOUND(id, mask, n.x, n.y, n.z, d) per plane, mask
+// the pieces it bounds as bits), the nearest ahead kept for each piece at once: a ray that
+// crosses a cut goes on to the piece beyond's nearest, found in the same pass.
+#define PIECE_BOUND(id, mask, nx, ny, nz, dd)                                        \
+    {                                                                                \
+        float f = dot(vec3(nx, ny, nz), d);                                          \
+        float t = max((dd - dot(vec3(nx, ny, nz), o)) / f, 0.0);                     \
+        bool ahead = f > 0.0 && (id < 0 || id != from_facet);                        \
+        bvec4 better = bvec4(ahead && (mask & 1) != 0 && t < t_piece.x,              \
+                             ahead && (mask & 2) != 0 && t < t_piece.y,              \
+                             ahead && (mask & 4) != 0 && t < t_piece.z,              \
+                             ahead && (mask & 8) != 0 && t < t_piece.w);             \
+        t_piece = mix(t_piece, vec4(t), better);                                     \
+        bound = ivec4(better.x ? id : bound.x, better.y ? id : bound.y,              \
+                      better.z ? id : bound.z, better.w ? id : bound.w);             \
+    }
+
+// The nearest plane ahead in `piece`; through a cut, on in the piece beyond (each crossing
+// enters a piece further along, so there are fewer crossings than pieces).
+bool next_exit(vec3 o, vec3 d, int from_facet, inout int piece, out float t_hit, out int facet) {
+    vec4 t_piece = vec4(1e30);
+    ivec4 bound = ivec4(-2);
+    PIECE_BOUNDS
+    for (int crossing = 0; crossing < PIECE_COUNT; ++crossing) {
+        t_hit = t_piece[piece];
+        int b = bound[piece];
+        if (b == -2) return false;
+        if (b >= 0) {
+            facet = b;
+            return true;
+        }
+        piece = entry_piece(o + t_hit * d, d);
+    }
+    return false;
+}
+
+// Each piece by the slab method (convex_intersector.cpp); an entry through a cut is none (the
+// piece beyond gives the ray's earlier one), nor is a start on a piece's surface leaving it.
+#define SLAB_BOUND(id, nx, ny, nz, w)                                                 \
+    {                                                                                 \
+        float f = dot(vec3(nx, ny, nz), d);                                           \
+        float inside_by = w - dot(vec3(nx, ny, nz), o);                               \
+        float t = inside_by / f;                                                      \
+        bool entering = f < 0.0 && t > t_in;                                          \
+        t_in = entering ? t : t_in;                                                   \
+        enter = entering ? id : enter;                                                \
+        t_out = f > 0.0 ? min(t_out, t) : (f == 0.0 && inside_by < 0.0 ? -1e30 : t_out); \
+    }
+#define SLAB_END(k)                                                                    \
+    {                                                                                  \
+        bool found = enter >= 0 && enter != from_facet && t_in > -kBehind &&           \
+                     t_out - t_in > kOnCut && t_in < t_hit;                            \
+        t_hit = found ? t_in : t_hit;                                                  \
+        facet = found ? enter : facet;                                                 \
+        piece = found ? k : piece;                                                     \
+    }
+
+// Where a ray leaving the stone from piece `left` comes back in, and into which piece.
+bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, out int facet,
+                     out int piece) {
+    t_hit = 1e30;
+    facet = -1;
+    piece = -1;
+    PIECE_ENTRY
+    t_hit = max(t_hit, 0.0);
+    return facet >= 0;
+}
+
+#else
 // Barycentric slack: Moller-Trumbore in float can let a ray through the shared edge of two
 // triangles slip between them; a hair of overlap closes the crack.
 const float kEdgeSlack = 1e-5;
@@ -403,13 +499,24 @@ bool nearest_triangle(vec3 o, vec3 d, int from_facet, float side, out float t_hi
     return facet >= 0;
 }
 
-bool next_entry_from(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet) {
+// The triangles hold no pieces (`left` and `piece` are unused), nor know the pocket walls.
+int entry_piece(vec3 p, vec3 d) {
+    return 0;
+}
+
+bool may_reenter(int facet) {
+    return true;
+}
+
+bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, out int facet,
+                     out int piece) {
+    piece = 0;
     return nearest_triangle(o, d, from_facet, -1.0, t_hit, facet);
 }
 
 // As bvh_intersector.cpp's next_exit; its fallback for a start point on an edge (leave where
 // it stands through the steepest neighbour) is approximated by the planes through the point.
-bool next_exit(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet) {
+bool next_exit(vec3 o, vec3 d, int from_facet, inout int piece, out float t_hit, out int facet) {
     if (nearest_triangle(o, d, from_facet, 1.0, t_hit, facet)) return true;
     float steepest = 0.0;
     for (int i = 0; i < u_facet_count; ++i) {
@@ -424,75 +531,85 @@ bool next_exit(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet) {
     return facet >= 0;
 }
 
-// A branch of the ray tree (tracer.cpp's Branch).
-struct Branch {
+#endif
+
+// An inside branch of the ray tree waiting its turn (tracer.cpp's Branch).
+struct Inside {
     vec3 origin;
     vec3 direction;
     float weight;
     float path_mm;
     int facet;  // facet the branch starts on
     int depth;  // segments followed so far, this one included
-    bool inside;
+    int piece;  // the piece it is in (PIECES)
 };
 
-// Branches a pixel may hold at once. The exit branch is popped right after it is pushed, so
-// each depth level leaves at most two branches waiting (an inside and an outside reflection):
-// 32 holds every tree up to max_depth 15. Deeper, a full stack drops the branch, as the CPU
-// (64 deep) does, counting it truncated.
-const int kMaxBranches = 32;
+// Inside branches a pixel may hold at once: only those refracted back in through a pocket
+// wait (each inside chain is followed at once, each outside chain too), so a few suffice; a
+// full list drops the branch, as the CPU's (64 deep) does, counting it truncated.
+const int kMaxWaiting = 8;
 
 // Everything that leaves the stone from the ray refracted in at `entry` through `entry_facet`
-// with weight `weight`, every branch traced at index `ior`.
+// with weight `weight`, every branch traced at index `ior`: as tracer.cpp follows its branches
+// (the same depth and weight rules), an inside chain of internal reflections at a time, each
+// exit ray followed outside until it leaves for good, its re-entries waiting.
 vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, float ior) {
     vec3 colour = vec3(0.0);
-    float t;
-    int facet;
-    vec3 n;
-    vec2 split;
-    Branch stack[kMaxBranches];
-    stack[0] = Branch(entry, inward, weight, 0.0, entry_facet, 1, true);
+    Inside waiting[kMaxWaiting];
+    waiting[0] = Inside(entry, inward, weight, 0.0, entry_facet, 1, entry_piece(entry, inward));
     int top = 1;
     while (top > 0) {
-        Branch b = stack[--top];
-        if (b.weight < u_min_weight || b.depth > u_max_depth) continue;
-        if (!b.inside) {
-            // Does the exit ray come back through the cleft?
-            if (!next_entry_from(b.origin, b.direction, b.facet, t, facet)) {
-                n = facet_plane(b.facet).xyz;
-                colour += shade_exit(b.origin, b.direction, n, b.weight, b.path_mm,
-                                     environment(b.origin, b.direction));
-                continue;
+        Inside b = waiting[--top];
+        vec3 o = b.origin;
+        vec3 d = b.direction;
+        float w = b.weight;
+        int from = b.facet;
+        int piece = b.piece;
+        for (int depth = b.depth; depth <= u_max_depth && w >= u_min_weight; ++depth) {
+            float t;
+            int facet;
+            if (!next_exit(o, d, from, piece, t, facet)) break;
+            vec3 p = o + t * d;
+            vec3 n = facet_plane(facet).xyz;
+            b.path_mm += t;
+            vec3 out_dir;
+            vec2 split = leave_stone(d, n, ior, out_dir);
+            // The exit ray (its depth the segment's): through a pocket's wall it may meet the
+            // stone again, each entry splitting it into a reflection, followed on outside,
+            // and a refraction back in, which waits; the entries' branches count a segment.
+            vec3 q = p;
+            vec3 e = out_dir;
+            vec3 m = n;
+            float we = w * split.y;
+            int on = facet;
+            int left = piece;
+            int e_depth = depth;
+            while (split.y > 0.0 && we >= u_min_weight) {
+                float te;
+                int entered;
+                int into;
+                if (!may_reenter(on) || !next_entry_from(q, e, on, left, te, entered, into)) {
+                    colour += shade_exit(q, e, m, we, b.path_mm, environment(q, e));
+                    break;
+                }
+                if (++e_depth > u_max_depth) break;
+                q += te * e;
+                m = facet_plane(entered).xyz;
+                vec2 s = split_weight(-dot(e, m), kAir, ior);
+                vec3 in_dir;
+                if (top < kMaxWaiting && s.y > 0.0 && we * s.y >= u_min_weight &&
+                    refract_ray(e, m, kAir, ior, in_dir)) {
+                    waiting[top++] = Inside(q, in_dir, we * s.y, b.path_mm, entered, e_depth, into);
+                }
+                e = reflect(e, m);
+                we *= s.x;
+                on = entered;
+                left = into;
             }
-            vec3 p = b.origin + t * b.direction;
-            n = facet_plane(facet).xyz;
-            split = split_weight(-dot(b.direction, n), kAir, ior);
-            if (top < kMaxBranches && split.x > 0.0) {
-                stack[top++] = Branch(p, reflect(b.direction, n), b.weight * split.x, b.path_mm,
-                                      facet, b.depth + 1, false);
-            }
-            vec3 in_dir;
-            if (top < kMaxBranches && split.y > 0.0 &&
-                refract_ray(b.direction, n, kAir, ior, in_dir)) {
-                stack[top++] =
-                    Branch(p, in_dir, b.weight * split.y, b.path_mm, facet, b.depth + 1, true);
-            }
-            continue;
-        }
-        if (!next_exit(b.origin, b.direction, b.facet, t, facet)) continue;
-        vec3 p = b.origin + t * b.direction;
-        n = facet_plane(facet).xyz;
-        float path = b.path_mm + t;
-        split = split_weight(dot(b.direction, n), ior, kAir);
-        // Reflection first, so the exit branch is resolved next and the stack stays shallow.
-        if (top < kMaxBranches && split.x > 0.0) {
-            stack[top++] =
-                Branch(p, reflect(b.direction, n), b.weight * split.x, path, facet, b.depth + 1,
-                       true);
-        }
-        vec3 out_dir;
-        if (top < kMaxBranches && split.y > 0.0 &&
-            refract_ray(b.direction, -n, ior, kAir, out_dir)) {
-            stack[top++] = Branch(p, out_dir, b.weight * split.y, path, facet, b.depth, false);
+            o = p;
+            d = reflect(d, n);
+            w *= split.x;
+            from = facet;
         }
     }
     return colour;
