@@ -10,9 +10,9 @@
 // of a mirror-symmetric stone and testing the few planes there, also constants
 // (trace/folded_exit.hpp, the CPU twin). trace_method.cpp measures which is fastest.
 // NON_CONVEX: the stone's convex pieces with PIECES (trace/convex_pieces.hpp), else its
-// triangles, brute force (a heart has a few hundred); exit rays that may re-enter through the
-// cleft wait on a small fixed stack as on the CPU; it traces fire only exactly
-// (trace_method.cpp asks for it only in a still view's frames).
+// triangles, brute force (a heart has a few hundred); exit rays are followed outside at once,
+// and branches refracted back in through the cleft wait on a small fixed list; it traces fire
+// only exactly (trace_method.cpp asks for it only in a still view's frames).
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 out vec4 o_colour;
