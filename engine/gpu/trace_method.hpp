@@ -13,6 +13,7 @@
 // and fire are compiled into the program a draw uses (program_variants.hpp), built on first
 // use.
 
+#include <iterator>
 #include <string>
 
 #include "geometry/stone.hpp"
@@ -65,8 +66,8 @@ class TraceMethod {
     // picture; 0 when not measured), also as a log phrase.
     ExitSearch exit_search() const { return search_; }
     double measured_ms(ExitSearch search) const {
-        const int i = static_cast<int>(search);
-        return i < 3 ? measured_ms_[i] : 0.0;
+        const auto i = static_cast<std::size_t>(search);  // the convex searches come first
+        return i < std::size(measured_ms_) ? measured_ms_[i] : 0.0;
     }
     std::string measurement() const;
 

@@ -77,9 +77,14 @@ bool convex(const Stone& stone, const Cut& cut, double tol) {
 struct Partition {
     std::vector<ConvexPieces::Node> nodes;
     std::vector<ConvexPieces::Piece> pieces;
-    std::size_t planes = 0;  // over all pieces: what the search costs
 
     int root() const { return nodes.empty() ? -1 : 0; }
+    // Over all pieces: what the search costs.
+    std::size_t planes() const {
+        std::size_t n = 0;
+        for (const ConvexPieces::Piece& p : pieces) n += p.facets.size() + p.cuts.size();
+        return n;
+    }
 };
 
 // Appends `part` to `into`, returning the child reference of its root.
@@ -93,7 +98,6 @@ int append(Partition& into, const Partition& part) {
         into.nodes.push_back(n);
     }
     into.pieces.insert(into.pieces.end(), part.pieces.begin(), part.pieces.end());
-    into.planes += part.planes;
     return shift(part.root());
 }
 
@@ -107,7 +111,7 @@ class Splitter {
         const Cut cut = cut_to(stone_, region, tol_);
         if (cut.facets.empty()) return std::nullopt;
         if (convex(stone_, cut, tol_))
-            return Partition{{}, {piece(region, cut)}, planes(region, cut)};
+            return Partition{{}, {{cut.facets, bounding_cuts(region, cut)}}};
         std::optional<Partition> found;
         for (const Plane& c : candidates_) {
             if (budget < 2) break;
@@ -126,7 +130,7 @@ class Splitter {
             p.nodes[0].above = append(p, *high);
             const bool fewer =
                 !found || p.pieces.size() < found->pieces.size() ||
-                (p.pieces.size() == found->pieces.size() && p.planes < found->planes);
+                (p.pieces.size() == found->pieces.size() && p.planes() < found->planes());
             if (fewer) {
                 found = std::move(p);
                 budget = static_cast<int>(found->pieces.size()) - 1;  // only fewer pieces now
@@ -159,13 +163,6 @@ class Splitter {
         return cuts;
     }
 
-    ConvexPieces::Piece piece(const Region& region, const Cut& cut) const {
-        return {cut.facets, bounding_cuts(region, cut)};
-    }
-    std::size_t planes(const Region& region, const Cut& cut) const {
-        return cut.facets.size() + bounding_cuts(region, cut).size();
-    }
-
     const Stone& stone_;
     std::vector<Plane> candidates_;
     double tol_;
@@ -188,7 +185,8 @@ std::vector<std::uint32_t> walls_of_pockets(const Stone& stone, double tol) {
 // The planes a split may cut along: the stone's mirrors (its symmetry's reflections, and the
 // coordinate planes through its centre, which a design's mirrors usually are) and its reflex
 // facets' planes. Duplicates are dropped.
-std::vector<Plane> candidate_cuts(const Stone& stone, double tol) {
+std::vector<Plane> candidate_cuts(const Stone& stone, const std::vector<std::uint32_t>& walls,
+                                  double tol) {
     std::vector<Plane> candidates;
     auto add = [&](const Plane& p) {
         for (const Plane& c : candidates) {
@@ -214,7 +212,7 @@ std::vector<Plane> candidate_cuts(const Stone& stone, double tol) {
         n[axis] = 1.0;
         add(Plane{n, 0.0});
     }
-    for (std::uint32_t f : walls_of_pockets(stone, tol)) {
+    for (std::uint32_t f : walls) {
         // A stone with more pocket walls than this needs more pieces than a split may have;
         // the cap bounds the search (candidates to the power of the cuts) on such a stone.
         if (candidates.size() >= kMaxCandidates) break;
@@ -230,13 +228,14 @@ std::optional<ConvexPieces> ConvexPieces::split(const Stone& stone) {
     // Corners within a millionth of the stone's size count as on a plane, as
     // stone_from_triangles judges convexity (kPlanarRelative).
     const double tol = 1e-6 * bounding_radius(stone.vertices);
-    const Splitter splitter(stone, candidate_cuts(stone, tol), tol);
+    std::vector<std::uint32_t> walls = walls_of_pockets(stone, tol);
+    const Splitter splitter(stone, candidate_cuts(stone, walls, tol), tol);
     auto partition = splitter.best({}, kMaxPieces);
     if (!partition || partition->pieces.size() < 2) return std::nullopt;
     ConvexPieces pieces;
     pieces.nodes_ = std::move(partition->nodes);
     pieces.pieces_ = std::move(partition->pieces);
-    pieces.pocket_walls_ = walls_of_pockets(stone, tol);
+    pieces.pocket_walls_ = std::move(walls);
     return pieces;
 }
 

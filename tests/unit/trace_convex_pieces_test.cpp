@@ -15,29 +15,23 @@
 #include "render/camera.hpp"
 #include "trace/convex_pieces.hpp"
 #include "trace/intersector.hpp"
+#include "trace/ray_triangle.hpp"
 #include "trace_cut_stones.hpp"
 #include "trace_test_stones.hpp"
 
 namespace gem {
 namespace {
 
-// Inside by the parity of triangle crossings along a random direction (Möller-Trumbore).
+// Inside by the parity of triangle crossings along a random direction (the watertight test,
+// trace/ray_triangle.hpp: a ray through an edge is counted once).
 bool inside_by_parity(const Stone& s, const glm::dvec3& p, std::mt19937_64& rng) {
-    const glm::dvec3 d = test::random_unit(rng);
+    const ShearedRay ray(p, test::random_unit(rng));
     int crossings = 0;
     for (const MeshTriangle& tri : s.triangles) {
-        const glm::dvec3 a = s.vertices[tri.v[0]];
-        const glm::dvec3 e1 = s.vertices[tri.v[1]] - a;
-        const glm::dvec3 e2 = s.vertices[tri.v[2]] - a;
-        const glm::dvec3 q = glm::cross(d, e2);
-        const double det = glm::dot(e1, q);
-        if (std::abs(det) < 1e-14) continue;
-        const glm::dvec3 o = p - a;
-        const double u = glm::dot(o, q) / det;
-        const glm::dvec3 r = glm::cross(o, e1);
-        const double v = glm::dot(d, r) / det;
-        if (u < 0.0 || v < 0.0 || u + v > 1.0) continue;
-        crossings += glm::dot(e2, r) / det > 0.0;
+        double t = 0.0;
+        crossings += intersect_watertight(ray, s.vertices[tri.v[0]], s.vertices[tri.v[1]],
+                                          s.vertices[tri.v[2]], t) &&
+                     t > 0.0;
     }
     return crossings % 2 == 1;
 }
