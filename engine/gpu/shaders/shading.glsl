@@ -76,22 +76,32 @@ bool hits_triangle(vec3 o, vec3 d, int tri, float limit) {
     return t > 0.0 && t < limit;
 }
 
+#ifdef PIECES
+// trace.frag: whether the stone lies within `limit` along d from p, on `facet`, outside.
+bool stone_ahead(vec3 p, vec3 d, int facet, float limit);
+#endif
+
 // The thesis' obstruction test on a non-convex stone: the leaving facet must face the light,
-// and no other part of the stone may lie between the exit point and the light.
-bool light_blocked(vec3 p, vec3 facet_normal, vec3 to_light, float distance_to_light) {
+// and no other part of the stone may lie between the exit point and the light: by the
+// stone's convex pieces where trace.frag has them, else by every triangle.
+bool light_blocked(vec3 p, vec3 facet_normal, int facet, vec3 to_light, float distance_to_light) {
     if (dot(facet_normal, to_light) <= 0.0) return true;
+#ifdef PIECES
+    return stone_ahead(p, to_light, facet, distance_to_light);
+#else
     vec3 o = p + facet_normal * 1e-4;
     for (int i = 0; i < u_triangle_count; ++i) {
         if (hits_triangle(o, to_light, i, distance_to_light)) return true;
     }
     return false;
+#endif
 }
 #endif
 
-// Sum over the lights of colour * k * (d.L)^h for the ray leaving p along d through a facet
+// Sum over the lights of colour * k * (d.L)^h for the ray leaving p along d through `facet`,
 // with outward normal n. LIGHT_COUNT is compiled in and the loop unrolled: on llvmpipe a loop
 // bounded by a uniform count cost three times the lights' own arithmetic.
-vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
+vec3 light_specular(vec3 p, vec3 d, vec3 n, int facet, float k) {
     vec3 sum = vec3(0.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec4 lp = u_light_position[i];
@@ -101,7 +111,8 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
         float c = max(dot(d, to_light), 0.0);
 #ifdef NON_CONVEX
         if (c <= 0.0) continue;
-        if (light_blocked(p, n, to_light, lp.w > 0.5 ? 1.0 / inverse_length : 1e30)) continue;
+        float distance = lp.w > 0.5 ? 1.0 / inverse_length : 1e30;
+        if (light_blocked(p, n, facet, to_light, distance)) continue;
         sum += u_light_colour[i] * specular_power(c);
 #else
         // The obstruction test on a convex stone: only the leaving facet can block a light,
@@ -114,26 +125,26 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, float k) {
 }
 
 // The first reflected ray's share of the pixel.
-vec3 shade_reflected(vec3 p, vec3 d, vec3 n, float weight) {
+vec3 shade_reflected(vec3 p, vec3 d, vec3 n, int facet, float weight) {
     vec3 env = environment(p, d);
 #ifdef SHADING_THESIS
-    return weight * (light_specular(p, d, n, u_k_s) + env * u_alpha +
+    return weight * (light_specular(p, d, n, facet, u_k_s) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
 #else
-    return weight * (env + light_specular(p, d, n, u_k_s));
+    return weight * (env + light_specular(p, d, n, facet, u_k_s));
 #endif
 }
 
 // One exit ray's share; `env` is what the ray sees (per channel when dispersed).
-vec3 shade_exit(vec3 p, vec3 d, vec3 n, float weight, float path_mm, vec3 env) {
+vec3 shade_exit(vec3 p, vec3 d, vec3 n, int facet, float weight, float path_mm, vec3 env) {
 #ifdef SHADING_THESIS
-    return weight * (u_stone_colour * light_specular(p, d, n, u_k_st) + env * u_alpha +
+    return weight * (u_stone_colour * light_specular(p, d, n, facet, u_k_st) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
 #else
 #ifdef ABSORBING
-    return weight * exp(-u_absorption * path_mm) * (env + light_specular(p, d, n, u_k_st));
+    return weight * exp(-u_absorption * path_mm) * (env + light_specular(p, d, n, facet, u_k_st));
 #else
-    return weight * (env + light_specular(p, d, n, u_k_st));  // exp(0) per exit skipped
+    return weight * (env + light_specular(p, d, n, facet, u_k_st));  // exp(0) per exit skipped
 #endif
 #endif
 }

@@ -48,9 +48,10 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
         vec4 c = texelFetch(rays_c, t, 0);
         vec3 d = to_stone * a.xyz;
         vec3 pos = to_stone * b.xyz;
-        vec3 n = to_stone * facet_plane(int(c.w + 0.5)).xyz;
+        int facet = int(c.w + 0.5);
+        vec3 n = to_stone * facet_plane(facet).xyz;
         if (k == 0) {
-            colour += shade_reflected(pos, d, n, a.w);
+            colour += shade_reflected(pos, d, n, facet, a.w);
             continue;
         }
 #ifdef FIRE_FIRST_ORDER
@@ -61,7 +62,7 @@ bool shade_view(vec2 p, usampler2D pixels, sampler2D rays_a, sampler2D rays_b,
 #else
         vec3 env = environment(pos, d);
 #endif
-        colour += shade_exit(pos, d, n, a.w, b.w, env);
+        colour += shade_exit(pos, d, n, facet, a.w, b.w, env);
     }
     return true;
 }

@@ -349,7 +349,8 @@ vec3 follow_inside(vec3 entry, vec3 d, vec3 dd, int facet, float weight, float i
             } else {
                 env = environment(p, out_dir);
             }
-            colour += shade_exit(p, out_dir, n, out_weight, path, env);
+            // A convex stone's lights are hidden only by the exit facet: no index needed.
+            colour += shade_exit(p, out_dir, n, -1, out_weight, path, env);
         }
         o = p;
         d = reflect(d, n);
@@ -457,6 +458,21 @@ bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, 
     PIECE_ENTRY
     t_hit = max(t_hit, 0.0);
     return facet >= 0;
+}
+
+// shading.glsl's obstruction test. A loop, not an if: a SIMD rasteriser runs an if's body
+// under a lane mask even when no lane takes it, but leaves a loop no lane enters, and from
+// any facet but a pocket wall the light cannot be hidden (the search is every piece's every
+// plane, per light and exit).
+bool stone_ahead(vec3 p, vec3 d, int facet, float limit) {
+    bool ahead = false;
+    for (int once = may_reenter(facet) ? 0 : 1; once < 1; ++once) {
+        float t;
+        int entered;
+        int piece;
+        ahead = next_entry_from(p, d, facet, -1, t, entered, piece) && t < limit;
+    }
+    return ahead;
 }
 
 #else
@@ -589,7 +605,7 @@ vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, flo
                 int entered;
                 int into;
                 if (!may_reenter(on) || !next_entry_from(q, e, on, left, te, entered, into)) {
-                    colour += shade_exit(q, e, m, we, b.path_mm, environment(q, e));
+                    colour += shade_exit(q, e, m, on, we, b.path_mm, environment(q, e));
                     break;
                 }
                 if (++e_depth > u_max_depth) break;
@@ -647,10 +663,10 @@ void main() {
 #endif
         }
     }
-    colour += reflected * shade_reflected(entry, reflect(direction, n), n, 1.0);
+    colour += reflected * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
 #else
     vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
-    vec3 colour = shade_reflected(entry, reflect(direction, n), n, split.x);
+    vec3 colour = shade_reflected(entry, reflect(direction, n), n, facet, split.x);
     vec3 inward;
     bool refracted = refract_ray(direction, n, kAir, u_ior, inward);
 #ifdef NON_CONVEX
