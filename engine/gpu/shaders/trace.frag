@@ -460,19 +460,14 @@ bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, 
     return facet >= 0;
 }
 
-// shading.glsl's obstruction test. A loop, not an if: a SIMD rasteriser runs an if's body
-// under a lane mask even when no lane takes it, but leaves a loop no lane enters, and from
-// any facet but a pocket wall the light cannot be hidden (the search is every piece's every
-// plane, per light and exit).
+// shading.glsl's obstruction test: from any facet but a pocket wall a ray leaves the stone's
+// convex hull, so nothing can hide the light.
 bool stone_ahead(vec3 p, vec3 d, int facet, float limit) {
-    bool ahead = false;
-    for (int once = may_reenter(facet) ? 0 : 1; once < 1; ++once) {
-        float t;
-        int entered;
-        int piece;
-        ahead = next_entry_from(p, d, facet, -1, t, entered, piece) && t < limit;
-    }
-    return ahead;
+    float t;
+    int entered;
+    int piece;
+    return may_reenter(facet) && next_entry_from(p, d, facet, -1, t, entered, piece) &&
+           t < limit;
 }
 
 #else
