@@ -87,11 +87,6 @@ std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fo
     return defines;
 }
 
-// One plane's arguments to SLAB_BOUND: its facet (-1 for a cut) and the plane.
-std::string bound_arguments(int facet, const Plane& p) {
-    return "(" + std::to_string(facet) + ", " + plane_arguments(p) + ")";
-}
-
 // trace.frag's PIECES constants (trace/convex_pieces.hpp).
 std::vector<std::string> pieces_defines(const Stone& stone, const ConvexPieces& split) {
     const auto& pieces = split.pieces();
@@ -104,34 +99,30 @@ std::vector<std::string> pieces_defines(const Stone& stone, const ConvexPieces& 
                glsl_float(node.cut.d) + ") ? " + locate(node.below) + " : " + locate(node.above) +
                ")";
     };
-    auto slab = [&](const ConvexPieces::Piece& piece) {
-        std::string text;
-        for (std::uint32_t f : piece.facets) {
-            text += " SLAB_BOUND" + bound_arguments(static_cast<int>(f), stone.facets[f].plane);
-        }
-        for (const Plane& cut : piece.cuts) text += " SLAB_BOUND" + bound_arguments(-1, cut);
-        return text;
-    };
     // Each plane once, with the pieces it bounds as bits: a facet may bound several, a cut
     // bounds one from each side, facing opposite ways.
     std::vector<int> masks(stone.facets.size(), 0);
     std::string exits = "PIECE_BOUNDS";
-    std::string entries = "PIECE_ENTRY";
     for (std::size_t k = 0; k < pieces.size(); ++k) {
-        const std::string index = std::to_string(k);
         for (std::uint32_t f : pieces[k].facets) masks[f] |= 1 << k;
         for (const Plane& cut : pieces[k].cuts) {
             exits +=
                 " PIECE_BOUND(-1, " + std::to_string(1 << k) + ", " + plane_arguments(cut) + ")";
         }
-        entries += " if (left != " + index +
-                   ") { float t_in = -1e30; float t_out = 1e30; int enter = -1;" + slab(pieces[k]) +
-                   " SLAB_END(" + index + ") }";
     }
     for (std::size_t f = 0; f < masks.size(); ++f) {
         if (masks[f] == 0) continue;
         exits += " PIECE_BOUND(" + std::to_string(f) + ", " + std::to_string(masks[f]) + ", " +
                  plane_arguments(stone.facets[f].plane) + ")";
+    }
+    std::string polygons = "POCKET_WALLS";
+    for (const ConvexPieces::WallPolygon& wall : split.wall_polygons()) {
+        const std::string facet = std::to_string(wall.facet);
+        polygons +=
+            " WALL_BEGIN(" + facet + ", " + plane_arguments(stone.facets[wall.facet].plane) + ")";
+        for (const Plane& edge : wall.edges)
+            polygons += " WALL_EDGE(" + plane_arguments(edge) + ")";
+        polygons += " WALL_END(" + facet + ")";
     }
     std::string walls;
     for (std::uint32_t f : split.pocket_walls()) {
@@ -142,7 +133,7 @@ std::vector<std::string> pieces_defines(const Stone& stone, const ConvexPieces& 
             "PIECE_COUNT " + std::to_string(pieces.size()),
             "PIECE_LOCATE " + locate(split.nodes().empty() ? -1 : 0),
             exits,
-            entries};
+            polygons};
 }
 
 // A non-convex stone's programs: its convex pieces where it splits into few (and `search`

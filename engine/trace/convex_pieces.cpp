@@ -182,6 +182,47 @@ std::vector<std::uint32_t> walls_of_pockets(const Stone& stone, double tol) {
     return walls;
 }
 
+// Edge planes of the polygon `corners` (counter-clockwise seen from outside the facet with
+// outward normal n), facing out of it; empty when a corner lies outside an edge (not convex).
+std::vector<Plane> convex_edges(const std::vector<glm::dvec3>& corners, const glm::dvec3& n,
+                                double tol) {
+    std::vector<Plane> edges;
+    for (std::size_t i = 0; i < corners.size(); ++i) {
+        const glm::dvec3& a = corners[i];
+        const glm::dvec3 out = glm::normalize(glm::cross(corners[(i + 1) % corners.size()] - a, n));
+        edges.push_back({out, glm::dot(out, a)});
+    }
+    for (const Plane& e : edges) {
+        for (const glm::dvec3& c : corners) {
+            if (e.signed_distance(c) > tol) return {};
+        }
+    }
+    return edges;
+}
+
+std::vector<ConvexPieces::WallPolygon> polygons_of_walls(const Stone& stone,
+                                                         const std::vector<std::uint32_t>& walls,
+                                                         double tol) {
+    std::vector<ConvexPieces::WallPolygon> polygons;
+    for (std::uint32_t f : walls) {
+        const glm::dvec3& n = stone.facets[f].plane.n;
+        std::vector<glm::dvec3> loop;
+        for (std::uint32_t v : stone.facets[f].loop) loop.push_back(stone.vertices[v]);
+        std::vector<Plane> edges = convex_edges(loop, n, tol);
+        if (!edges.empty()) {
+            polygons.push_back({f, std::move(edges)});
+            continue;
+        }
+        for (const MeshTriangle& t : stone.triangles) {
+            if (t.facet != f) continue;
+            const std::vector<glm::dvec3> corners = {stone.vertices[t.v[0]], stone.vertices[t.v[1]],
+                                                     stone.vertices[t.v[2]]};
+            polygons.push_back({f, convex_edges(corners, n, tol)});
+        }
+    }
+    return polygons;
+}
+
 // The planes a split may cut along: the stone's mirrors (its symmetry's reflections, and the
 // coordinate planes through its centre, which a design's mirrors usually are) and its reflex
 // facets' planes. Duplicates are dropped.
@@ -235,6 +276,7 @@ std::optional<ConvexPieces> ConvexPieces::split(const Stone& stone) {
     ConvexPieces pieces;
     pieces.nodes_ = std::move(partition->nodes);
     pieces.pieces_ = std::move(partition->pieces);
+    pieces.wall_polygons_ = polygons_of_walls(stone, walls, tol);
     pieces.pocket_walls_ = std::move(walls);
     return pieces;
 }

@@ -60,6 +60,17 @@ class ConvexPieces {
     // through any other leaves the hull there and never meets the stone again.
     const std::vector<std::uint32_t>& pocket_walls() const { return pocket_walls_; }
 
+    // A convex part of a pocket wall: the wall's plane and its edges as planes facing out of
+    // it in that plane (a point of the plane is on the polygon when inside every edge). A wall
+    // whose loop is convex is one polygon, any other its triangles.
+    struct WallPolygon {
+        std::uint32_t facet = 0;
+        std::vector<Plane> edges;
+    };
+    // A ray inside the hull (from a pocket wall, out of the stone) can meet the stone only on
+    // these: the stone's other facets bound the hull and face out of it.
+    const std::vector<WallPolygon>& wall_polygons() const { return wall_polygons_; }
+
     // The piece holding p, a point of the stone; on a cut (within `on_cut`, mm), the piece its
     // direction d points into.
     int locate(const glm::dvec3& p, const glm::dvec3& d, double on_cut) const;
@@ -68,6 +79,7 @@ class ConvexPieces {
     std::vector<Node> nodes_;
     std::vector<Piece> pieces_;
     std::vector<std::uint32_t> pocket_walls_;
+    std::vector<WallPolygon> wall_polygons_;
 };
 
 }  // namespace gem

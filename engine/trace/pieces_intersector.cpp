@@ -1,6 +1,7 @@
 // A non-convex stone traced as its convex pieces (trace/convex_pieces.hpp): the CPU twin of the
 // trace shader's PIECES search, which the tests hold against the triangle BVH.
 
+#include <algorithm>
 #include <cassert>
 #include <limits>
 #include <vector>
@@ -23,7 +24,9 @@ struct Bound {
 class PiecesIntersector final : public Intersector {
   public:
     PiecesIntersector(const Stone& stone, ConvexPieces pieces)
-        : pieces_(std::move(pieces)), on_cut_(1e-9 * bounding_radius(stone.vertices)) {
+        : stone_(stone),
+          pieces_(std::move(pieces)),
+          on_cut_(1e-9 * bounding_radius(stone.vertices)) {
         for (const ConvexPieces::Piece& piece : pieces_.pieces()) {
             std::vector<Bound> bounds;
             for (std::uint32_t f : piece.facets) bounds.push_back({stone.facets[f].plane, f});
@@ -32,11 +35,17 @@ class PiecesIntersector final : public Intersector {
         }
     }
 
-    // A convex piece's entries, each by the slab method; one through a cut is not an entry
-    // into the stone (the piece beyond the cut gives the ray's earlier one). A ray starting on
-    // a piece's surface and leaving it has no stretch inside: it does not enter there.
+    // From a facet of the stone (trace.frag's way): only a ray leaving through a pocket wall
+    // can come back, and only onto a pocket wall. From elsewhere: the nearest of the pieces'
+    // entries, each by the slab method, one through a cut not counting (the piece beyond the
+    // cut gives the ray's earlier one).
     bool next_entry(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
                     SurfaceHit& hit) const override {
+        const auto& walls = pieces_.pocket_walls();
+        if (from_facet != kNoFacet) {
+            if (std::find(walls.begin(), walls.end(), from_facet) == walls.end()) return false;
+            return wall_entry(origin, direction, from_facet, hit);
+        }
         double best = kInf;
         std::uint32_t entry_facet = kNoFacet;
         for (const std::vector<Bound>& bounds : bounds_) {
@@ -56,17 +65,16 @@ class PiecesIntersector final : public Intersector {
                     missed = true;
                 }
             }
-            if (missed || entry == nullptr || entry->facet == kNoFacet ||
-                entry->facet == from_facet || t_in < -on_cut_ || t_out - t_in <= on_cut_ ||
-                t_in >= best) {
+            if (missed || entry == nullptr || entry->facet == kNoFacet || t_in < 0.0 ||
+                t_out <= t_in || t_in >= best) {
                 continue;
             }
             best = t_in;
             entry_facet = entry->facet;
         }
         if (entry_facet == kNoFacet) return false;
-        hit.t = std::max(best, 0.0);
-        hit.point = origin + hit.t * direction;
+        hit.t = best;
+        hit.point = origin + best * direction;
         hit.facet = entry_facet;
         return true;
     }
@@ -105,6 +113,33 @@ class PiecesIntersector final : public Intersector {
     bool can_reenter() const override { return true; }
 
   private:
+    // The nearest pocket-wall polygon the ray meets from outside, leaving `from_facet`.
+    bool wall_entry(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
+                    SurfaceHit& hit) const {
+        double best = kInf;
+        std::uint32_t entry_facet = kNoFacet;
+        for (const ConvexPieces::WallPolygon& wall : pieces_.wall_polygons()) {
+            const Plane& plane = stone_.facets[wall.facet].plane;
+            const double facing = glm::dot(plane.n, direction);
+            if (wall.facet == from_facet || facing >= 0.0) continue;
+            const double t = (plane.d - glm::dot(plane.n, origin)) / facing;
+            if (t < -on_cut_ || t >= best) continue;
+            const glm::dvec3 p = origin + t * direction;
+            bool inside = true;
+            for (const Plane& edge : wall.edges)
+                inside = inside && edge.signed_distance(p) <= on_cut_;
+            if (!inside) continue;
+            best = t;
+            entry_facet = wall.facet;
+        }
+        if (entry_facet == kNoFacet) return false;
+        hit.t = std::max(best, 0.0);
+        hit.point = origin + hit.t * direction;
+        hit.facet = entry_facet;
+        return true;
+    }
+
+    const Stone& stone_;
     ConvexPieces pieces_;
     double on_cut_;
     std::vector<std::vector<Bound>> bounds_;  // per piece

@@ -371,8 +371,7 @@ const float kBehind = 1e-5;
 // The stone as convex pieces (trace/convex_pieces.hpp; pieces_intersector.cpp is the CPU twin),
 // their planes as constants: trace_method.cpp writes PIECE_COUNT, PIECE_LOCATE (the partition
 // as nested selects of below_cut), PIECE_BOUNDS (below; id a plane's facet or -1 for a cut),
-// PIECE_POCKET_WALL and PIECE_ENTRY (for each piece k but `left`, its SLAB_BOUNDs and
-// SLAB_END(k)).
+// PIECE_POCKET_WALL and POCKET_WALLS (below).
 // A point this near a cut (mm) is on it: it goes where its direction points.
 const float kOnCut = 1e-5;
 
@@ -428,34 +427,31 @@ bool next_exit(vec3 o, vec3 d, int from_facet, inout int piece, out float t_hit,
     return false;
 }
 
-// Each piece by the slab method (convex_intersector.cpp); an entry through a cut is none (the
-// piece beyond gives the ray's earlier one), nor is a start on a piece's surface leaving it.
-#define SLAB_BOUND(id, nx, ny, nz, w)                                                 \
-    {                                                                                 \
-        float f = dot(vec3(nx, ny, nz), d);                                           \
-        float inside_by = w - dot(vec3(nx, ny, nz), o);                               \
-        float t = inside_by / f;                                                      \
-        bool entering = f < 0.0 && t > t_in;                                          \
-        t_in = entering ? t : t_in;                                                   \
-        enter = entering ? id : enter;                                                \
-        t_out = f > 0.0 ? min(t_out, t) : (f == 0.0 && inside_by < 0.0 ? -1e30 : t_out); \
-    }
-#define SLAB_END(k)                                                                    \
-    {                                                                                  \
-        bool found = enter >= 0 && enter != from_facet && t_in > -kBehind &&           \
-                     t_out - t_in > kOnCut && t_in < t_hit;                            \
-        t_hit = found ? t_in : t_hit;                                                  \
-        facet = found ? enter : facet;                                                 \
-        piece = found ? k : piece;                                                     \
+// A ray that leaves through a pocket wall is inside the stone's convex hull, and can meet the
+// stone again only on a pocket wall (the other facets bound the hull): POCKET_WALLS holds, per
+// convex part of a wall, WALL_BEGIN(facet, n.x, n.y, n.z, d), a WALL_EDGE(n.x, n.y, n.z, d) per
+// edge (facing out of the polygon) and WALL_END(facet).
+const float kWallSlack = 1e-5;  // mm: a ray through the edge of two polygons meets one of them
+#define WALL_BEGIN(id, nx, ny, nz, dd)                                    \
+    {                                                                     \
+        float f = dot(vec3(nx, ny, nz), d);                               \
+        float t = (dd - dot(vec3(nx, ny, nz), o)) / f;                    \
+        vec3 q = o + t * d;                                               \
+        bool on = f < 0.0 && id != from_facet && t > -kBehind && t < t_hit;
+#define WALL_EDGE(nx, ny, nz, dd) on = on && dot(vec3(nx, ny, nz), q) <= dd + kWallSlack;
+#define WALL_END(id)              \
+        t_hit = on ? t : t_hit;   \
+        facet = on ? id : facet;  \
     }
 
-// Where a ray leaving the stone from piece `left` comes back in, and into which piece.
-bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, out int facet,
+// Where a ray leaving the stone through pocket wall `from_facet` comes back in, and into which
+// piece.
+bool next_entry_from(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet,
                      out int piece) {
     t_hit = 1e30;
     facet = -1;
-    piece = -1;
-    PIECE_ENTRY
+    POCKET_WALLS
+    piece = entry_piece(o + t_hit * d, d);
     t_hit = max(t_hit, 0.0);
     return facet >= 0;
 }
@@ -466,8 +462,7 @@ bool stone_ahead(vec3 p, vec3 d, int facet, float limit) {
     float t;
     int entered;
     int piece;
-    return may_reenter(facet) && next_entry_from(p, d, facet, -1, t, entered, piece) &&
-           t < limit;
+    return may_reenter(facet) && next_entry_from(p, d, facet, t, entered, piece) && t < limit;
 }
 
 #else
@@ -510,7 +505,7 @@ bool nearest_triangle(vec3 o, vec3 d, int from_facet, float side, out float t_hi
     return facet >= 0;
 }
 
-// The triangles hold no pieces (`left` and `piece` are unused), nor know the pocket walls.
+// The triangles hold no pieces (`piece` is unused), nor know the pocket walls.
 int entry_piece(vec3 p, vec3 d) {
     return 0;
 }
@@ -519,7 +514,7 @@ bool may_reenter(int facet) {
     return true;
 }
 
-bool next_entry_from(vec3 o, vec3 d, int from_facet, int left, out float t_hit, out int facet,
+bool next_entry_from(vec3 o, vec3 d, int from_facet, out float t_hit, out int facet,
                      out int piece) {
     piece = 0;
     return nearest_triangle(o, d, from_facet, -1.0, t_hit, facet);
@@ -593,13 +588,12 @@ vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, flo
             vec3 m = n;
             float we = w * split.y;
             int on = facet;
-            int left = piece;
             int e_depth = depth;
             while (split.y > 0.0 && we >= u_min_weight) {
                 float te;
                 int entered;
                 int into;
-                if (!may_reenter(on) || !next_entry_from(q, e, on, left, te, entered, into)) {
+                if (!may_reenter(on) || !next_entry_from(q, e, on, te, entered, into)) {
                     colour += shade_exit(q, e, m, on, we, b.path_mm, environment(q, e));
                     break;
                 }
@@ -615,7 +609,6 @@ vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, flo
                 e = reflect(e, m);
                 we *= s.x;
                 on = entered;
-                left = into;
             }
             o = p;
             d = reflect(d, n);
