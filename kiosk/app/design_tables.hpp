@@ -1,7 +1,8 @@
 #pragma once
 // Tables for the designs in a catalogue (catalogue.hpp: a stone that names a stone description
 // instead of a database) and for the non-convex stones of its pieces (a heart in a three-stone
-// ring: traced by testing every triangle, it costs far more per pixel than a convex stone). Such
+// ring: traced as its convex pieces, or through its triangles where it does not split into
+// few, it costs more per pixel than a convex stone). Such
 // a stone is shown at once by the exact trace; its tables are built in the background when they
 // pay, and switched to between two frames (a piece's frame is timed whole, each of its
 // non-convex kinds judged by it; their tables store every direction, sized as the piece sizes
