@@ -88,6 +88,8 @@ std::vector<std::string> folded_defines(const Stone& stone, const FoldedExit& fo
 }
 
 // trace.frag's PIECES constants (trace/convex_pieces.hpp).
+static_assert(ConvexPieces::kMaxPieces <= 4,
+              "trace.frag keeps each piece's nearest plane in a vec4");
 std::vector<std::string> pieces_defines(const Stone& stone, const ConvexPieces& split) {
     const auto& pieces = split.pieces();
     // The partition as nested selects: below_cut(p, d, n, d) ? below : above.
