@@ -138,7 +138,7 @@ Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
-                                         const glm::dvec3* spectrum) {
+                                         const StillWavelengths* spectrum) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     FrameStats stats;

@@ -36,7 +36,7 @@ class FrameRenderer {
     // `spectrum`: the wavelengths of this frame of a still view (HdrPicture::spectrum()), for
     // spectral fire; null while the view moves.
     Result<FrameStats> render(const Camera& camera, FrameWait wait,
-                              const glm::dvec3* spectrum = nullptr);
+                              const StillWavelengths* spectrum = nullptr);
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 

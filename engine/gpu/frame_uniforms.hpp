@@ -8,6 +8,7 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
+#include "optics/spectrum.hpp"
 #include "piece/placement.hpp"
 #include "render/camera.hpp"
 #include "render/shading.hpp"
@@ -25,9 +26,10 @@ struct StoneFrame {
     // Where the stone sits in the piece (identity: a loose stone). The stone is shaded in its
     // own frame: its camera and lights are moved into it, and its exits back out to the cube.
     Placement placement{};
-    // The wavelengths (nm, per channel) of this frame of a still view (HdrPicture::spectrum());
+    // The wavelengths (nm, per channel) of this frame of a still view and how its traces mix
+    // (HdrPicture::spectrum());
     // null while the view moves. The trace's fire is traced at them (trace_method.hpp).
-    const glm::dvec3* spectrum = nullptr;
+    const StillWavelengths* spectrum = nullptr;
 };
 
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).

@@ -112,7 +112,7 @@ void HdrPicture::begin_frame(bool still) {
     still_index_ = std::min(still_index_ + 1, options_.still_frames);
 }
 
-const glm::dvec3* HdrPicture::spectrum() const {
+const StillWavelengths* HdrPicture::spectrum() const {
     if (!spectrum_ || still_index_ < 0 || still_index_ >= options_.still_frames) return nullptr;
     return &spectrum_->frame(still_index_);
 }

@@ -62,7 +62,7 @@ class HdrPicture {
     glm::dvec2 jitter_ndc() const;
     // The wavelengths this frame traces (FrameRenderer::render): a still frame's, when the
     // picture is spectral; else null.
-    const glm::dvec3* spectrum() const;
+    const StillWavelengths* spectrum() const;
     // The still view has its still_frames frames: drawing it again changes nothing.
     bool settled() const;
     // The picture is as good as this view gets: settled, or no averaging at all.

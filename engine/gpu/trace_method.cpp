@@ -328,12 +328,14 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     p.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
     p.set("u_r_factor", static_cast<float>(trace.r_factor));
     p.set("u_t_factor", static_cast<float>(trace.t_factor));
-    // A still frame's own wavelengths where it has them, else the channels' dominant ones.
-    const glm::dvec3* nm = frame.spectrum;
-    p.set("u_ior_channel", nm != nullptr
-                               ? glm::vec3(frame.material.index(nm->x), frame.material.index(nm->y),
-                                           frame.material.index(nm->z))
-                               : channel_indices(frame.material));
+    // A still frame's own wavelengths where it has them, and how its three traces mix into the
+    // channels; else the channels' dominant ones, each its own channel.
+    const StillWavelengths* still = frame.spectrum;
+    p.set("u_ior_channel", still != nullptr ? glm::vec3(frame.material.index(still->nm.x),
+                                                        frame.material.index(still->nm.y),
+                                                        frame.material.index(still->nm.z))
+                                            : channel_indices(frame.material));
+    p.set("u_channel_mix", still != nullptr ? glm::mat3(still->mix) : glm::mat3(1.0f));
 
     geometry_.draw_front_faces();
     return gl_check("trace pass");

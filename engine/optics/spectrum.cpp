@@ -48,6 +48,8 @@ class ChannelScale {
             cumulative_.push_back(cumulative_.back() + std::max(rgb[channel], 0.0) * step_);
         }
     }
+    // The integral of the function's positive part over the visible range.
+    double positive_total() const { return cumulative_.back(); }
     double wavelength_at(double share) const {
         const double mass = share * cumulative_.back();
         const auto above = std::upper_bound(cumulative_.begin(), cumulative_.end(), mass);
@@ -105,13 +107,45 @@ StillSpectrum::StillSpectrum(int frames) {
         return radical_inverse(static_cast<unsigned>(a), 2) <
                radical_inverse(static_cast<unsigned>(b), 2);
     });
+    const ChannelScale scales[3] = {ChannelScale(0), ChannelScale(1), ChannelScale(2)};
+    const glm::dvec3 positive(scales[0].positive_total(), scales[1].positive_total(),
+                              scales[2].positive_total());
+    const glm::dvec3 whole = integrate_linear_srgb(kSpectrumMinNm, kSpectrumMaxNm);
     frames_.resize(static_cast<std::size_t>(frames));
     for (int channel = 0; channel < 3; ++channel) {
-        const ChannelScale scale(channel);
         for (int rank = 0; rank < frames; ++rank) {
             const int stratum = (rank + frames / 2) % frames;
-            frames_[static_cast<std::size_t>(by_inverse[rank])][channel] =
-                scale.wavelength_at((stratum + 0.5) / frames);
+            frames_[static_cast<std::size_t>(by_inverse[rank])].nm[channel] =
+                scales[channel].wavelength_at((stratum + 0.5) / frames);
+        }
+    }
+    // A channel is its positive part's mean (the channel's own trace, its strata being of
+    // equal weight) less its negative lobe's mean, each by its share of the whole integral:
+    // c = (P m+ - N m-) / (P - N).
+    for (StillWavelengths& frame : frames_) {
+        glm::dmat3 lobe_weight(0.0);  // [k][c]: trace k inside channel c's negative lobe
+        glm::dvec3 lobe_sum(0.0);
+        for (int k = 0; k < 3; ++k) {
+            const glm::dvec3 cmf = xyz_to_linear_srgb(cie1931_xyz(frame.nm[k]));
+            // The density the three channels' strata sample this wavelength with.
+            const glm::dvec3 density = glm::max(cmf, glm::dvec3(0.0)) / positive;
+            const glm::dvec3 w =
+                glm::max(-cmf, glm::dvec3(0.0)) / (density.x + density.y + density.z);
+            lobe_weight[k] = w;
+            lobe_sum += w;
+        }
+        frame.mix = glm::dmat3(0.0);
+        for (int c = 0; c < 3; ++c) {
+            const double negative = positive[c] - whole[c];
+            // No trace inside the lobe this frame: the channel is its positive part's mean.
+            if (lobe_sum[c] <= 0.0) {
+                frame.mix[c][c] = 1.0;
+                continue;
+            }
+            frame.mix[c][c] = positive[c] / whole[c];
+            for (int k = 0; k < 3; ++k) {
+                frame.mix[k][c] -= negative / whole[c] * lobe_weight[k][c] / lobe_sum[c];
+            }
         }
     }
 }

@@ -13,13 +13,18 @@
 // with spectral fire against one with exact fire, the two drawn in turn frame by frame (median
 // ms of --frames each, glFinish-bounded, and the median of the frame-by-frame ratios).
 //
-//   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--cache DIR] [--only TEXT]
-//                       [--images DIR] [--reference-check N]
+//   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--still-frames N]
+//                       [--cache DIR] [--only TEXT] [--size N] [--images DIR]
+//                       [--reference-check N] [--reference-check-spp N] [--without-fire]
 //
-// --depth, --min-weight: the GPU trace's (default 8, 1e-4). --cache keeps the references (PFM,
-// a few minutes to trace) between runs; default: the build tree. --images writes each picture
-// and the reference as PNG. --reference-check N also traces the reference at N wavelengths and
-// prints how far the 12-wavelength one is from it: how converged the reference itself is.
+// --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how many the still
+// pictures average (default 16, the kiosk's). --cache keeps the references (PFM, a few minutes
+// to trace) between runs; default: the build tree. --size draws every scene at that size.
+// --images writes each picture and the reference as PNG. How converged the reference itself
+// is: --reference-check N also traces it at N wavelengths, --reference-check-spp N at N
+// samples a pixel, and prints how far the usual one is from that. --without-fire: the
+// reference at the D line only and the trace without fire, what is left of the trace's own
+// error when dispersion is taken out.
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -67,13 +72,14 @@ gem::Scene scene_of(const StillScene& s) {
     return scene;
 }
 
-// The reference at `wavelengths` wavelengths, traced once and kept in `cache` (colour, and
-// coverage as a second PFM).
-gem::Image reference(const StillScene& s, const std::filesystem::path& cache,
-                     int wavelengths = 12) {
-    const std::string stem =
-        std::string(s.name) +
-        (wavelengths == 12 ? "" : "-" + std::to_string(wavelengths) + "-wavelengths");
+// The reference at `wavelengths` wavelengths (0: at the D line only, without dispersion) and
+// `spp` samples a pixel, traced once and kept in `cache` (colour, and coverage as a second PFM).
+gem::Image reference(const StillScene& s, const std::filesystem::path& cache, int wavelengths = 12,
+                     int spp = 16) {
+    std::string stem = std::string(s.name) + "-" + std::to_string(s.size);
+    if (wavelengths == 0) stem += "-d-line";
+    if (wavelengths > 0 && wavelengths != 12) stem += "-" + std::to_string(wavelengths) + "nm";
+    if (spp != 16) stem += "-" + std::to_string(spp) + "spp";
     const std::filesystem::path colour = cache / (stem + ".pfm");
     const std::filesystem::path coverage = cache / (stem + "-coverage.pfm");
     if (std::filesystem::exists(colour) && std::filesystem::exists(coverage)) {
@@ -85,11 +91,12 @@ gem::Image reference(const StillScene& s, const std::filesystem::path& cache,
         return image;
     }
     gem::Scene scene = scene_of(s);
-    scene.spectral = true;
-    scene.spectral_samples = wavelengths;
-    scene.samples_per_pixel = 16;
+    scene.spectral = wavelengths > 0;
+    if (wavelengths > 0) scene.spectral_samples = wavelengths;
+    scene.samples_per_pixel = spp;
     scene.depth = 64;
-    std::printf("  tracing the reference of %s at %d wavelengths ...\n", s.name, wavelengths);
+    std::printf("  tracing the reference of %s at %d wavelengths, %d spp ...\n", s.name, wavelengths,
+                spp);
     std::fflush(stdout);
     gem::RenderStats stats;
     gem::Image image = must(gem::render_reference(must(gem::build_stone(scene)),
@@ -105,7 +112,7 @@ gem::Image reference(const StillScene& s, const std::filesystem::path& cache,
 }
 
 struct Variant {
-    const char* label;
+    std::string label;
     TraceDispersion fire;
     int still_frames;  // 1: the moving picture
 };
@@ -205,6 +212,10 @@ int main(int argc, char** argv) {
     std::string only;
     std::string images;
     int check = 0;
+    int check_spp = 0;
+    bool without_fire = false;
+    int size = 0;
+    int still_frames = 16;
     CLI::App app{"bench_still_picture: the still picture against the spectral reference"};
     app.add_option("--frames", frames, "frames timed per fire")->check(CLI::Range(1, 1000));
     app.add_option("--cache", cache, "references are kept here")->capture_default_str();
@@ -216,33 +227,60 @@ int main(int argc, char** argv) {
     app.add_option("--reference-check", check,
                    "also the reference at this many wavelengths against the one at 12")
         ->check(CLI::Range(13, 1000));
+    app.add_option("--reference-check-spp", check_spp,
+                   "also the reference at this many samples a pixel against the one at 16")
+        ->check(CLI::Range(17, 4096));
+    app.add_flag("--without-fire", without_fire,
+                 "the reference at the D line only, the trace without fire: the trace's own error");
+    app.add_option("--still-frames", still_frames, "frames a still picture averages")
+        ->check(CLI::Range(2, 1024))
+        ->capture_default_str();
+    app.add_option("--size", size, "every scene at this size instead")->check(CLI::Range(16, 4096));
     CLI11_PARSE(app, argc, argv);
     auto context = must(gem::gpu::EglContext::headless());
     std::printf("GL: %s\n", context.description().c_str());
 
-    const std::vector<StillScene> scenes = {
+    std::vector<StillScene> scenes = {
         {"diamond-40", gem::CutShape::round_brilliant, "diamond", 40.0, 13.7, 384},
         {"diamond-face-up", gem::CutShape::round_brilliant, "diamond", 90.0, 13.7, 384},
         {"oval-sapphire-55", gem::CutShape::oval, "sapphire", 55.0, 0.0, 256},
         {"heart-ruby-65", gem::CutShape::heart, "ruby", 65.0, 0.0, 256},
     };
-    const std::vector<Variant> variants = {
+    if (size > 0) {
+        for (StillScene& s : scenes) s.size = size;
+    }
+    const std::string still = "still: " + std::to_string(still_frames) + " frames, ";
+    std::vector<Variant> variants = {
         {"moving: 1 frame, exact fire", TraceDispersion::exact, 1},
-        {"still: 16 frames, exact fire", TraceDispersion::exact, 16},
-        {"still: 16 frames, spectral fire", TraceDispersion::spectral, 16},
+        {still + "exact fire", TraceDispersion::exact, still_frames},
+        {still + "spectral fire", TraceDispersion::spectral, still_frames},
     };
+    if (without_fire) {
+        variants = {{"moving: 1 frame, no fire", TraceDispersion::none, 1},
+                    {still + "no fire", TraceDispersion::none, still_frames}};
+    }
     std::printf(
-        "\nAgainst the spectral reference (depth 64, 16 spp, 12 wavelengths); GPU trace at "
-        "depth %d, 4× MSAA: mean / p99 ΔE00 over the stone's pixels\n",
+        "\nAgainst the %s reference (depth 64, 16 spp, %s); GPU trace at depth %d, 4× MSAA: "
+        "mean / p99 ΔE00 over the stone's pixels\n",
+        without_fire ? "D-line" : "spectral", without_fire ? "no dispersion" : "12 wavelengths",
         depth);
     for (const StillScene& s : scenes) {
         if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
-        const gem::Image ref = gem::to_display(reference(s, cache), {});
+        const gem::Image ref = gem::to_display(reference(s, cache, without_fire ? 0 : 12), {});
         if (check > 0) {
             const gem::Image finer = gem::to_display(reference(s, cache, check), {});
             const gem::ImageError e = must(gem::compare_images(ref, finer, {.only_stone = true}));
             std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name,
                         ("reference, 12 against " + std::to_string(check) + " wavelengths").c_str(),
+                        e.delta_e_mean, e.delta_e_p99);
+        }
+        if (check_spp > 0) {
+            const int wavelengths = without_fire ? 0 : 12;
+            const gem::Image finer =
+                gem::to_display(reference(s, cache, wavelengths, check_spp), {});
+            const gem::ImageError e = must(gem::compare_images(ref, finer, {.only_stone = true}));
+            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name,
+                        ("reference, 16 against " + std::to_string(check_spp) + " spp").c_str(),
                         e.delta_e_mean, e.delta_e_p99);
         }
         if (!images.empty()) {
@@ -253,7 +291,7 @@ int main(int argc, char** argv) {
         for (std::size_t i = 0; i < variants.size(); ++i) {
             const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight);
             const gem::ImageError e = error_of(picture, ref);
-            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name, variants[i].label,
+            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name, variants[i].label.c_str(),
                         e.delta_e_mean, e.delta_e_p99);
             std::fflush(stdout);
             if (!images.empty()) {

@@ -27,6 +27,10 @@ uniform float u_t_factor;
 // n at each channel's wavelength: its dominant one, or a still frame's own
 // (optics/spectrum.hpp, StillSpectrum)
 uniform vec3 u_ior_channel;
+// FIRE_EXACT: column k is what the trace at u_ior_channel[k] adds to each channel (the identity
+// but for a still frame's wavelengths, whose traces also give the other channels' negative
+// lobes: optics/spectrum.hpp, StillSpectrum)
+uniform mat3 u_channel_mix;
 const float kAir = 1.0;
 // Fire (compiled in, program_variants.hpp): none by default; FIRE_FIRST_ORDER moves exit
 // directions by d(direction)/dn (n(channel) - n) as the table method does; FIRE_EXACT traces
@@ -635,23 +639,24 @@ void main() {
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
 #ifdef FIRE_EXACT
-    // Each channel reflected and refracted at its own index; the reflection shaded once.
+    // Each channel's trace reflected and refracted at its own index, its colour mixed into the
+    // channels; the reflection shaded once.
     vec3 reflected;
     vec3 colour = vec3(0.0);
-    for (int c = 0; c < 3; ++c) {
-        float ior = u_ior_channel[c];
+    for (int k = 0; k < 3; ++k) {
+        float ior = u_ior_channel[k];
         vec2 s = split_weight(-dot(direction, n), kAir, ior);
-        reflected[c] = s.x;
+        reflected[k] = s.x;
         vec3 d;
         if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
 #ifdef NON_CONVEX
-            colour[c] += follow_branches(entry, d, s.y, facet, ior)[c];
+            colour += u_channel_mix[k] * follow_branches(entry, d, s.y, facet, ior);
 #else
-            colour[c] += follow_inside(entry, d, vec3(0.0), facet, s.y, ior)[c];
+            colour += u_channel_mix[k] * follow_inside(entry, d, vec3(0.0), facet, s.y, ior);
 #endif
         }
     }
-    colour += reflected * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
+    colour += (u_channel_mix * reflected) * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
 #else
     vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, facet, split.x);
