@@ -192,6 +192,9 @@ int main(int argc, char** argv) {
     app.add_option("--still-frames", o.gpu.still_frames,
                    "GPU, one picture: average this many frames a sub-pixel apart")
         ->check(CLI::Range(1, 256));
+    app.add_option("--still-depth", o.gpu.still_depth,
+                   "trace: the depth those frames follow (0: --depth, as while moving)")
+        ->check(CLI::Range(0, 64));
     CLI11_PARSE(app, argc, argv);
     o.gpu.display.curve = *gem::tone_curve_named(o.tone);
     o.gpu.display.exposure_ev = o.exposure_ev;

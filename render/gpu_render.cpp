@@ -152,7 +152,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
                                       .display = o.display,
                                       .glare = o.glare,
                                       .still_frames = o.still_frames,
-                                      .spectral = o.fire == "spectral"});
+                                      .spectral = o.fire == "spectral",
+                                      .still_depth = o.still_depth});
     if (!hdr) return fail(hdr.error());
     std::printf("gemrender: picture %s\n", hdr.value().describe().c_str());
 
@@ -184,7 +185,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
             auto moved = Camera::make(jittered, framing_mm, scene.width, scene.height);
             if (!moved) return Error{moved.error()};
             hdr.value().bind();
-            auto drawn = r.render(moved.value(), gpu::FrameWait::none, hdr.value().spectrum());
+            auto drawn = r.render(moved.value(), gpu::FrameWait::none, hdr.value().still_frame());
             if (!drawn) return drawn;
             auto finished = hdr.value().finish(target.value());
             if (!finished) return Error{finished.error()};

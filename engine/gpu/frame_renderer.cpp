@@ -138,7 +138,7 @@ Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
-                                         const StillWavelengths* spectrum) {
+                                         const StillFrame& still) {
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     FrameStats stats;
@@ -181,7 +181,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         frame.environment = &seen;
         frame.cube_half_mm = cube_half_mm_;
         frame.scene_radius_mm = scene_radius_mm_;
-        frame.spectrum = spectrum;
+        frame.still = still;
     }
     // The stones' depth first (where the method has that pass), then the metal, then the
     // stones: each is shaded only where it is seen. Stones shaded before the metal cost every

@@ -33,10 +33,9 @@ class FrameRenderer {
     ~FrameRenderer();
 
     // Draws into the bound framebuffer (viewport set), waiting for the GPU as `wait` says.
-    // `spectrum`: the wavelengths of this frame of a still view (HdrPicture::spectrum()), for
-    // spectral fire; null while the view moves.
-    Result<FrameStats> render(const Camera& camera, FrameWait wait,
-                              const StillWavelengths* spectrum = nullptr);
+    // `still`: what this frame of a still view traces differently (HdrPicture::still_frame());
+    // the default while the view moves.
+    Result<FrameStats> render(const Camera& camera, FrameWait wait, const StillFrame& still = {});
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 

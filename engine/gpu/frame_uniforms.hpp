@@ -15,6 +15,16 @@
 
 namespace gem::gpu {
 
+// What a frame of a still view traces differently from a moving one (HdrPicture::still_frame());
+// the default is a moving frame.
+struct StillFrame {
+    // Its own wavelengths (nm, per channel) and how its traces mix, for spectral fire; null:
+    // the channels' dominant ones. The trace's fire is traced at them (trace_method.hpp).
+    const StillWavelengths* wavelengths = nullptr;
+    // The depth the trace follows in this frame; 0: its own (TraceSettings::max_depth).
+    int depth = 0;
+};
+
 struct StoneFrame {
     const Stone* stone = nullptr;
     Material material;  // may differ from stone->material: colour changes without a rebuild
@@ -26,10 +36,8 @@ struct StoneFrame {
     // Where the stone sits in the piece (identity: a loose stone). The stone is shaded in its
     // own frame: its camera and lights are moved into it, and its exits back out to the cube.
     Placement placement{};
-    // The wavelengths (nm, per channel) of this frame of a still view and how its traces mix
-    // (HdrPicture::spectrum());
-    // null while the view moves. The trace's fire is traced at them (trace_method.hpp).
-    const StillWavelengths* spectrum = nullptr;
+    // What this frame of a still view traces differently (HdrPicture::still_frame()).
+    StillFrame still{};
 };
 
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).

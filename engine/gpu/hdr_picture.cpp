@@ -112,9 +112,12 @@ void HdrPicture::begin_frame(bool still) {
     still_index_ = std::min(still_index_ + 1, options_.still_frames);
 }
 
-const StillWavelengths* HdrPicture::spectrum() const {
-    if (!spectrum_ || still_index_ < 0 || still_index_ >= options_.still_frames) return nullptr;
-    return &spectrum_->frame(still_index_);
+StillFrame HdrPicture::still_frame() const {
+    StillFrame still;
+    if (still_index_ < 0 || still_index_ >= options_.still_frames) return still;
+    if (spectrum_) still.wavelengths = &spectrum_->frame(still_index_);
+    still.depth = options_.still_depth;
+    return still;
 }
 
 bool HdrPicture::settled() const {
@@ -202,9 +205,12 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
 std::string HdrPicture::describe() const {
     char line[200];
     std::snprintf(
-        line, sizeof line, "%s, %d× MSAA, %d frames a still view%s, %s, %s at %+.1f EV",
+        line, sizeof line, "%s, %d× MSAA, %d frames a still view%s%s, %s, %s at %+.1f EV",
         high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
         accumulate_ ? options_.still_frames : 1, spectrum_ ? ", each its own wavelengths" : "",
+        accumulate_ && options_.still_depth > 0
+            ? (", traced to depth " + std::to_string(options_.still_depth)).c_str()
+            : "",
         glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
                                           " over " + std::to_string(glare_->levels()) + " levels")
                                              .c_str()

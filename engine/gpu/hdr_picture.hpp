@@ -16,8 +16,9 @@
 // the mean; after `still_frames` frames more drawing changes nothing (settled()).
 //
 // With spectral fire (PictureOptions::spectral) each still frame also traces its own
-// wavelengths, one per colour channel (spectrum(), optics/spectrum.hpp: StillSpectrum), so
-// that the mean of a still view's frames is each channel's spectral integral.
+// wavelengths, one per colour channel (still_frame(), optics/spectrum.hpp: StillSpectrum), so
+// that the mean of a still view's frames is each channel's spectral integral; and they may
+// trace deeper than the moving frames (still_depth).
 
 #include <optional>
 
@@ -25,6 +26,7 @@
 #include <string>
 
 #include "gpu/bloom_pass.hpp"
+#include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
 #include "gpu/render_target.hpp"
@@ -39,9 +41,13 @@ struct PictureOptions {
     DisplayTransform display;  // exposure and tone curve
     double glare = 0.04;       // share of the picture spread into glare; 0: none
     int still_frames = 16;     // frames averaged while the view is still; 1: none
-    // Spectral fire: each still frame traces its own wavelengths, one per channel (spectrum());
-    // needs still_frames > 1.
+    // Spectral fire: each still frame traces its own wavelengths, one per channel
+    // (still_frame()); needs still_frames > 1.
     bool spectral = false;
+    // The depth the trace follows in a still view's frames; 0: the moving frames' own. The
+    // still view's cost is latency, not frame rate (it stops once settled), and the light a
+    // ray still carries when its depth runs out has no cheaper stand-in (docs/accuracy.md).
+    int still_depth = 0;
 };
 
 // Each pass's time, measured with glFinish between passes (only when asked: it stalls).
@@ -60,9 +66,9 @@ class HdrPicture {
     // frame should be moved by jitter_ndc() (CameraSettings::shift).
     void begin_frame(bool still);
     glm::dvec2 jitter_ndc() const;
-    // The wavelengths this frame traces (FrameRenderer::render): a still frame's, when the
-    // picture is spectral; else null.
-    const StillWavelengths* spectrum() const;
+    // What this frame traces differently (FrameRenderer::render): a still frame's wavelengths,
+    // when the picture is spectral, and its depth; a moving frame's defaults else.
+    StillFrame still_frame() const;
     // The still view has its still_frames frames: drawing it again changes nothing.
     bool settled() const;
     // The picture is as good as this view gets: settled, or no averaging at all.

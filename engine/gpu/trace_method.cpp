@@ -313,7 +313,8 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
                                TraceDispersion dispersion) {
     assert(frame.environment != nullptr);
     const std::uint32_t features =
-        shading_features(frame) | fire_features(dispersion, convex_, frame.spectrum != nullptr);
+        shading_features(frame) |
+        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -323,14 +324,15 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     geometry_.bind(p, kStoneUnit);
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));
-    p.set("u_max_depth", trace.max_depth);
+    // A still frame may trace deeper than a moving one.
+    p.set("u_max_depth", frame.still.depth > 0 ? frame.still.depth : trace.max_depth);
     p.set("u_min_weight", static_cast<float>(trace.min_weight));
     p.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
     p.set("u_r_factor", static_cast<float>(trace.r_factor));
     p.set("u_t_factor", static_cast<float>(trace.t_factor));
     // A still frame's own wavelengths where it has them, and how its three traces mix into the
     // channels; else the channels' dominant ones, each its own channel.
-    const StillWavelengths* still = frame.spectrum;
+    const StillWavelengths* still = frame.still.wavelengths;
     p.set("u_ior_channel", still != nullptr ? glm::vec3(frame.material.index(still->nm.x),
                                                         frame.material.index(still->nm.y),
                                                         frame.material.index(still->nm.z))

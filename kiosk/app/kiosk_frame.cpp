@@ -14,7 +14,7 @@ Result<KioskFrame> draw_kiosk_frame(StoneScene* scene, const Camera* camera,
     if (scene != nullptr && camera != nullptr) {
         gpu::FrameRenderer& renderer = scene->renderer();
         renderer.prepare(*camera, omega);
-        auto stats = renderer.render(*camera, wait, picture.spectrum());
+        auto stats = renderer.render(*camera, wait, picture.still_frame());
         if (stats) {
             frame.stats = stats.value();
         } else {

@@ -15,6 +15,7 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
     o.glare = picture.glare;
     o.still_frames = picture.still_frames;
     o.spectral = picture.spectral_stills && picture.still_frames > 1;
+    o.still_depth = picture.still_depth;
     o.display = display_transform(picture, LookChoice{});
     return o;
 }

@@ -212,6 +212,8 @@ constexpr KeySpec<PictureConfig> kPictureKeys[] = {
                         PictureConfig& o) { r.integer(n, k, 1, 256, o.still_frames); }},
     {"spectral_stills", [](ConfigReader& r, const Node& n, Key k,
                            PictureConfig& o) { r.boolean(n, k, o.spectral_stills); }},
+    {"still_depth", [](ConfigReader& r, const Node& n, Key k,
+                       PictureConfig& o) { r.integer(n, k, 0, 64, o.still_depth); }},
     {"stone_share", [](ConfigReader& r, const Node& n, Key k,
                        PictureConfig& o) { r.number(n, k, 0.05, 0.8, o.stone_share); }},
 };

@@ -14,12 +14,15 @@
 // ms of --frames each, glFinish-bounded, and the median of the frame-by-frame ratios).
 //
 //   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--still-frames N]
-//                       [--cache DIR] [--only TEXT] [--size N] [--images DIR]
+//                       [--still-depth D] [--cache DIR] [--only TEXT] [--size N] [--images DIR]
 //                       [--reference-check N] [--reference-check-spp N] [--without-fire]
 //
-// --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how many the still
-// pictures average (default 16, the kiosk's). --cache keeps the references (PFM, a few minutes
-// to trace) between runs; default: the build tree. --size draws every scene at that size.
+// Each picture's line ends with its frames' summed time (glFinish-bounded, the programs' first
+// use included). --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how
+// many the still pictures average (default 16, the kiosk's); --still-depth D: also the still
+// pictures whose frames trace to depth D (the kiosk's picture.still_depth). --cache keeps the
+// references (PFM, a few minutes to trace) between runs; default: the build tree. --size draws
+// every scene at that size.
 // --images writes each picture and the reference as PNG. How converged the reference itself
 // is: --reference-check N also traces it at N wavelengths, --reference-check-spp N at N
 // samples a pixel, and prints how far the usual one is from that. --without-fire: the
@@ -95,8 +98,8 @@ gem::Image reference(const StillScene& s, const std::filesystem::path& cache, in
     if (wavelengths > 0) scene.spectral_samples = wavelengths;
     scene.samples_per_pixel = spp;
     scene.depth = 64;
-    std::printf("  tracing the reference of %s at %d wavelengths, %d spp ...\n", s.name, wavelengths,
-                spp);
+    std::printf("  tracing the reference of %s at %d wavelengths, %d spp ...\n", s.name,
+                wavelengths, spp);
     std::fflush(stdout);
     gem::RenderStats stats;
     gem::Image image = must(gem::render_reference(must(gem::build_stone(scene)),
@@ -114,7 +117,8 @@ gem::Image reference(const StillScene& s, const std::filesystem::path& cache, in
 struct Variant {
     std::string label;
     TraceDispersion fire;
-    int still_frames;  // 1: the moving picture
+    int still_frames;     // 1: the moving picture
+    int still_depth = 0;  // the still frames' own depth; 0: the moving frames'
 };
 
 // The trace of `scene` as gemrender draws it, at `depth` and `min_weight` with `fire`;
@@ -136,7 +140,9 @@ gem::gpu::FrameRenderer trace_renderer(const gem::Scene& scene, const gem::Envir
 }
 
 // The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
-gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight) {
+// `ms`: the frames' summed time, each glFinish-bounded.
+gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight,
+                       double* ms) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
     auto renderer = trace_renderer(scene, environment, depth, min_weight, v.fire);
@@ -147,14 +153,15 @@ gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double 
                                                 .display = {},
                                                 .glare = 0.0,
                                                 .still_frames = v.still_frames,
-                                                .spectral = spectral}));
+                                                .spectral = spectral,
+                                                .still_depth = v.still_depth}));
     for (int f = 0; f < v.still_frames; ++f) {
         hdr.begin_frame(v.still_frames > 1);
         gem::CameraSettings cs = scene.camera;
         cs.shift += hdr.jitter_ndc();
         const auto camera = must(gem::Camera::make(cs, renderer.stone_radius_mm(), s.size, s.size));
         hdr.bind();
-        must(renderer.render(camera, gem::gpu::FrameWait::frame, hdr.spectrum()));
+        *ms += must(renderer.render(camera, gem::gpu::FrameWait::frame, hdr.still_frame())).cpu_ms;
         must(hdr.finish(target));
     }
     return target.read();
@@ -187,9 +194,9 @@ void frame_costs(const StillScene& s, int frames, int depth, double min_weight) 
                 must(gem::Camera::make(scene.camera, renderer.stone_radius_mm(), s.size, s.size));
             hdr.bind();
             // A still frame drawn with its wavelengths (spectral) or without (exact fire).
-            ms[k] = must(renderer.render(camera, gem::gpu::FrameWait::frame,
-                                         k == 0 ? hdr.spectrum() : nullptr))
-                        .cpu_ms;
+            gem::gpu::StillFrame still = hdr.still_frame();
+            if (k == 1) still.wavelengths = nullptr;
+            ms[k] = must(renderer.render(camera, gem::gpu::FrameWait::frame, still)).cpu_ms;
             must(hdr.finish(target));
         }
         if (f < 0) continue;  // the programs' first use
@@ -213,6 +220,7 @@ int main(int argc, char** argv) {
     std::string images;
     int check = 0;
     int check_spp = 0;
+    int still_depth = 0;
     bool without_fire = false;
     int size = 0;
     int still_frames = 16;
@@ -230,6 +238,9 @@ int main(int argc, char** argv) {
     app.add_option("--reference-check-spp", check_spp,
                    "also the reference at this many samples a pixel against the one at 16")
         ->check(CLI::Range(17, 4096));
+    app.add_option("--still-depth", still_depth,
+                   "also the still pictures whose frames trace to this depth")
+        ->check(CLI::Range(1, 64));
     app.add_flag("--without-fire", without_fire,
                  "the reference at the D line only, the trace without fire: the trace's own error");
     app.add_option("--still-frames", still_frames, "frames a still picture averages")
@@ -258,6 +269,16 @@ int main(int argc, char** argv) {
     if (without_fire) {
         variants = {{"moving: 1 frame, no fire", TraceDispersion::none, 1},
                     {still + "no fire", TraceDispersion::none, still_frames}};
+    }
+    if (still_depth > 0) {
+        const std::string label = ", depth " + std::to_string(still_depth);
+        const std::size_t count = variants.size();
+        for (std::size_t i = 1; i < count; ++i) {
+            Variant v = variants[i];
+            v.label += label;
+            v.still_depth = still_depth;
+            variants.push_back(v);
+        }
     }
     std::printf(
         "\nAgainst the %s reference (depth 64, 16 spp, %s); GPU trace at depth %d, 4× MSAA: "
@@ -289,10 +310,11 @@ int main(int argc, char** argv) {
                 ref, std::filesystem::path(images) / (std::string(s.name) + "-reference.png")));
         }
         for (std::size_t i = 0; i < variants.size(); ++i) {
-            const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight);
+            double ms = 0.0;
+            const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight, &ms);
             const gem::ImageError e = error_of(picture, ref);
-            std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name, variants[i].label.c_str(),
-                        e.delta_e_mean, e.delta_e_p99);
+            std::printf("%-22s %-50s ΔE00 %5.2f  p99 %5.1f  %7.0f ms\n", s.name,
+                        variants[i].label.c_str(), e.delta_e_mean, e.delta_e_p99, ms);
             std::fflush(stdout);
             if (!images.empty()) {
                 must(gem::write_png(picture,

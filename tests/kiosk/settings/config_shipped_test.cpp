@@ -96,9 +96,9 @@ TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
     // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
-    // 12, attract 6, render 7, picture 7, catalogue 5, designs 8, snapshot 2, background 5,
+    // 12, attract 6, render 7, picture 8, catalogue 5, designs 8, snapshot 2, background 5,
     // lighting 4, lighting.light 3.
-    EXPECT_EQ(known.size(), 75u);
+    EXPECT_EQ(known.size(), 76u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -179,6 +179,7 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(s.picture.stone_share, d.picture.stone_share);
     EXPECT_EQ(s.picture.still_frames, d.picture.still_frames);
     EXPECT_EQ(s.picture.spectral_stills, d.picture.spectral_stills);
+    EXPECT_EQ(s.picture.still_depth, d.picture.still_depth);
 
     EXPECT_EQ(s.catalogue.default_dir, d.catalogue.default_dir);
     EXPECT_EQ(s.catalogue.state_dir, d.catalogue.state_dir);
