@@ -193,7 +193,7 @@ int main(int argc, char** argv) {
                    "GPU, one picture: average this many frames a sub-pixel apart")
         ->check(CLI::Range(1, 256));
     app.add_option("--still-depth", o.gpu.still_depth,
-                   "trace: the depth those frames follow (0: --depth, as while moving)")
+                   "trace: the depth those frames follow where deeper than --depth")
         ->check(CLI::Range(0, 64));
     CLI11_PARSE(app, argc, argv);
     o.gpu.display.curve = *gem::tone_curve_named(o.tone);

@@ -30,7 +30,7 @@ struct GpuRenderOptions {
     double glare = 0.0;            // glare share (the kiosk's bloom); 0 compares with the CPU
     int still_frames = 1;          // one picture: frames a sub-pixel apart averaged, as a still
                                    // kiosk view is
-    int still_depth = 0;           // trace: the depth of those frames; 0: --depth
+    int still_depth = 0;           // trace: those frames' depth where deeper than the scene's
     const Piece* piece = nullptr;  // trace, phong: the piece instead of the scene's stone and a
                                    // ring, framed by its bounding sphere as the CPU frames it
 };

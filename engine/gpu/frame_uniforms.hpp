@@ -21,7 +21,8 @@ struct StillFrame {
     // Its own wavelengths (nm, per channel) and how its traces mix, for spectral fire; null:
     // the channels' dominant ones. The trace's fire is traced at them (trace_method.hpp).
     const StillWavelengths* wavelengths = nullptr;
-    // The depth the trace follows in this frame; 0: its own (TraceSettings::max_depth).
+    // The depth the trace follows in this frame where deeper than its own
+    // (TraceSettings::max_depth); 0: its own.
     int depth = 0;
 };
 

@@ -44,7 +44,8 @@ struct PictureOptions {
     // Spectral fire: each still frame traces its own wavelengths, one per channel
     // (still_frame()); needs still_frames > 1.
     bool spectral = false;
-    // The depth the trace follows in a still view's frames; 0: the moving frames' own. The
+    // The depth the trace follows in a still view's frames where deeper than the moving
+    // frames' (0: theirs). The
     // still view's cost is latency, not frame rate (it stops once settled), and the light a
     // ray still carries when its depth runs out has no cheaper stand-in (docs/accuracy.md).
     int still_depth = 0;

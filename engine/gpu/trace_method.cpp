@@ -324,8 +324,8 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     geometry_.bind(p, kStoneUnit);
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));
-    // A still frame may trace deeper than a moving one.
-    p.set("u_max_depth", frame.still.depth > 0 ? frame.still.depth : trace.max_depth);
+    // A still frame may trace deeper than a moving one, never shallower.
+    p.set("u_max_depth", std::max(frame.still.depth, trace.max_depth));
     p.set("u_min_weight", static_cast<float>(trace.min_weight));
     p.set("u_thesis_weights", trace.weights == WeightModel::thesis_factors ? 1 : 0);
     p.set("u_r_factor", static_cast<float>(trace.r_factor));

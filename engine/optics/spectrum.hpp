@@ -60,7 +60,7 @@ struct StillWavelengths {
 // the spectrum evenly.
 //
 // A channel's negative lobe (linear sRGB's functions dip below zero where another primary's
-// colour is: red between about 440 and 545 nm) is the frame's three traces weighted by how
+// colour is: red between about 460 and 550 nm) is the frame's three traces weighted by how
 // far each falls inside it, against how densely the three channels' strata sample there
 // (balance heuristic), divided by those weights' sum: a mean of that channel's light over
 // the lobe. Without it a channel is off by 10-30 % wherever light is not white (red of light

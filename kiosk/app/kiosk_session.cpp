@@ -503,7 +503,8 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     notifier_.frame_presented(done_s);
     // The frame budget is the moving frames': a still frame traced deeper (picture.still_depth)
     // costs more by choice, and only while the view settles.
-    if (scene_ && selection_->has_stone() && scene_picture_->still_frame().depth == 0) {
+    if (scene_ && selection_->has_stone() &&
+        scene_picture_->still_frame().depth <= config_.render.depth) {
         design_tables_->frame_drawn(
             selection_->stone(), scene_tables_, frames_since_scene_++, record.draw_ms,
             frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),

@@ -50,7 +50,8 @@ struct PictureConfig {
     // A convex stone's fire in still frames: each traces its own wavelengths, one per channel,
     // so the still picture comes to the spectral truth (gpu/hdr_picture.hpp).
     bool spectral_stills = true;
-    // The depth the trace follows in still frames (0: render.depth, as moving). A ray cut at
+    // The depth the trace follows in still frames where deeper than render.depth (0: as
+    // moving). A ray cut at
     // its depth loses the light it still carries, most in a diamond; still frames cost latency
     // while the view settles, not frame rate.
     int still_depth = 16;

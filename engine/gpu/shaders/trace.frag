@@ -656,7 +656,8 @@ void main() {
 #endif
         }
     }
-    colour += (u_channel_mix * reflected) * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
+    colour +=
+        (u_channel_mix * reflected) * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
 #else
     vec2 split = split_weight(-dot(direction, n), kAir, u_ior);
     vec3 colour = shade_reflected(entry, reflect(direction, n), n, facet, split.x);
