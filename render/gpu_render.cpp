@@ -11,6 +11,7 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
+#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
@@ -178,18 +179,9 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         }
         // One frame into the HDR picture and out through its finishing passes; `still`: the
         // view of the frame before, moved by the picture's sub-pixel jitter.
-        const auto draw = [&](bool still) -> Result<gpu::FrameStats> {
-            hdr.value().begin_frame(still);
-            CameraSettings jittered = cs;
-            jittered.shift += hdr.value().jitter_ndc();
-            auto moved = Camera::make(jittered, framing_mm, scene.width, scene.height);
-            if (!moved) return Error{moved.error()};
-            hdr.value().bind();
-            auto drawn = r.render(moved.value(), gpu::FrameWait::none, hdr.value().still_frame());
-            if (!drawn) return drawn;
-            auto finished = hdr.value().finish(target.value());
-            if (!finished) return Error{finished.error()};
-            return drawn;
+        const auto draw = [&](bool still) {
+            return gpu::draw_picture_frame(r, hdr.value(), cs, framing_mm, still,
+                                           gpu::FrameWait::none, target.value());
         };
         const auto start = std::chrono::steady_clock::now();
         auto stats = draw(false);

@@ -1,9 +1,9 @@
 #include "gpu/environment_cube.hpp"
 
-#include <cstring>
 #include <vector>
 
 #include "gpu/gl_check.hpp"
+#include "gpu/gl_extensions.hpp"
 
 namespace gem::gpu {
 
@@ -17,16 +17,8 @@ CubeFaceBasis cube_face_basis(int face) {
 }
 
 bool renders_half_float() {
-    GLint count = 0;
-    glGetIntegerv(GL_NUM_EXTENSIONS, &count);
-    for (GLint i = 0; i < count; ++i) {
-        const auto* name = reinterpret_cast<const char*>(glGetStringi(GL_EXTENSIONS, i));
-        if (name != nullptr && (std::strcmp(name, "GL_EXT_color_buffer_half_float") == 0 ||
-                                std::strcmp(name, "GL_EXT_color_buffer_float") == 0)) {
-            return true;
-        }
-    }
-    return false;
+    return gl_has_extension("GL_EXT_color_buffer_half_float") ||
+           gl_has_extension("GL_EXT_color_buffer_float");
 }
 
 Result<EnvironmentCube> EnvironmentCube::allocate(int face_size) {

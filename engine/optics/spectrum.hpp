@@ -56,8 +56,8 @@ struct StillWavelengths {
 // dominant wavelength, gpu/channel_wavelengths.hpp). Each frame traces one wavelength per
 // channel; over the frames each channel's wavelengths stratify its colour matching function's
 // positive part, the middle of one stratum of equal weight per frame, in radical-inverse
-// order from the middle one (1/2, 0, 3/4, 1/4, ...), so the first few frames already cover
-// the spectrum evenly.
+// order (base 5) from the middle one, so the first few frames already cover the spectrum
+// evenly, and independently of the frames' sub-pixel offsets (bases 2 and 3).
 //
 // A channel's negative lobe (linear sRGB's functions dip below zero where another primary's
 // colour is: red between about 460 and 550 nm) is the frame's three traces weighted by how

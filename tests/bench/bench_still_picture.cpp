@@ -16,6 +16,7 @@
 //   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--still-frames N]
 //                       [--still-depth D] [--cache DIR] [--only TEXT] [--size N] [--images DIR]
 //                       [--reference-check N] [--reference-check-spp N] [--without-fire]
+//                       [--reference-wavelengths N] [--reference-spp N]
 //
 // Each picture's line ends with its frames' summed time (glFinish-bounded, the programs' first
 // use included). --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how
@@ -23,11 +24,13 @@
 // pictures whose frames trace to depth D (the kiosk's picture.still_depth). --cache keeps the
 // references (PFM, a few minutes to trace) between runs; default: the build tree. --size draws
 // every scene at that size.
+// --msaa: the pictures' MSAA samples (default 4, the kiosk's; the frame costs stay at 4).
 // --images writes each picture and the reference as PNG. How converged the reference itself
 // is: --reference-check N also traces it at N wavelengths, --reference-check-spp N at N
 // samples a pixel, and prints how far the usual one is from that. --without-fire: the
 // reference at the D line only and the trace without fire, what is left of the trace's own
-// error when dispersion is taken out.
+// error when dispersion is taken out. --reference-wavelengths, --reference-spp: a finer
+// reference to measure against (kept apart in the cache, by name).
 #include <CLI/CLI.hpp>
 
 #include <cstdio>
@@ -38,6 +41,7 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
+#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "render/image_error.hpp"
 #include "render/reference_render.hpp"
@@ -142,28 +146,21 @@ gem::gpu::FrameRenderer trace_renderer(const gem::Scene& scene, const gem::Envir
 // The picture of `s` as the kiosk shows it after `v.still_frames` frames of a still view.
 // `ms`: the frames' summed time, each glFinish-bounded.
 gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double min_weight,
-                       double* ms) {
+                       int msaa, double* ms) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
     auto renderer = trace_renderer(scene, environment, depth, min_weight, v.fire);
     auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
     const bool spectral = v.fire == TraceDispersion::spectral;
     auto hdr = must(gem::gpu::HdrPicture::make(s.size, s.size,
-                                               {.samples = 4,
+                                               {.samples = msaa,
                                                 .display = {},
                                                 .glare = 0.0,
                                                 .still_frames = v.still_frames,
                                                 .spectral = spectral,
                                                 .still_depth = v.still_depth}));
-    for (int f = 0; f < v.still_frames; ++f) {
-        hdr.begin_frame(v.still_frames > 1);
-        gem::CameraSettings cs = scene.camera;
-        cs.shift += hdr.jitter_ndc();
-        const auto camera = must(gem::Camera::make(cs, renderer.stone_radius_mm(), s.size, s.size));
-        hdr.bind();
-        *ms += must(renderer.render(camera, gem::gpu::FrameWait::frame, hdr.still_frame())).cpu_ms;
-        must(hdr.finish(target));
-    }
+    must(gem::gpu::draw_still_picture(renderer, hdr, scene.camera, renderer.stone_radius_mm(),
+                                      target, ms));
     return target.read();
 }
 
@@ -224,6 +221,9 @@ int main(int argc, char** argv) {
     bool without_fire = false;
     int size = 0;
     int still_frames = 16;
+    int reference_wavelengths = 12;
+    int reference_spp = 16;
+    int msaa = 4;
     CLI::App app{"bench_still_picture: the still picture against the spectral reference"};
     app.add_option("--frames", frames, "frames timed per fire")->check(CLI::Range(1, 1000));
     app.add_option("--cache", cache, "references are kept here")->capture_default_str();
@@ -234,10 +234,10 @@ int main(int argc, char** argv) {
     app.add_option("--images", images, "write the pictures here as PNG");
     app.add_option("--reference-check", check,
                    "also the reference at this many wavelengths against the one at 12")
-        ->check(CLI::Range(13, 1000));
+        ->check(CLI::Range(3, 1000));
     app.add_option("--reference-check-spp", check_spp,
                    "also the reference at this many samples a pixel against the one at 16")
-        ->check(CLI::Range(17, 4096));
+        ->check(CLI::Range(1, 4096));
     app.add_option("--still-depth", still_depth,
                    "also the still pictures whose frames trace to this depth")
         ->check(CLI::Range(1, 64));
@@ -247,6 +247,15 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(2, 1024))
         ->capture_default_str();
     app.add_option("--size", size, "every scene at this size instead")->check(CLI::Range(16, 4096));
+    app.add_option("--reference-wavelengths", reference_wavelengths, "the reference's wavelengths")
+        ->check(CLI::Range(3, 1000))
+        ->capture_default_str();
+    app.add_option("--reference-spp", reference_spp, "the reference's samples a pixel")
+        ->check(CLI::Range(1, 4096))
+        ->capture_default_str();
+    app.add_option("--msaa", msaa, "MSAA samples of the pictures")
+        ->check(CLI::Range(1, 16))
+        ->capture_default_str();
     CLI11_PARSE(app, argc, argv);
     auto context = must(gem::gpu::EglContext::headless());
     std::printf("GL: %s\n", context.description().c_str());
@@ -280,28 +289,33 @@ int main(int argc, char** argv) {
             variants.push_back(v);
         }
     }
+    const int wavelengths = without_fire ? 0 : reference_wavelengths;
     std::printf(
-        "\nAgainst the %s reference (depth 64, 16 spp, %s); GPU trace at depth %d, 4× MSAA: "
+        "\nAgainst the %s reference (depth 64, %d spp, %s); GPU trace at depth %d, %d× MSAA: "
         "mean / p99 ΔE00 over the stone's pixels\n",
-        without_fire ? "D-line" : "spectral", without_fire ? "no dispersion" : "12 wavelengths",
-        depth);
+        without_fire ? "D-line" : "spectral", reference_spp,
+        without_fire ? "no dispersion" : (std::to_string(wavelengths) + " wavelengths").c_str(),
+        depth, msaa);
     for (const StillScene& s : scenes) {
         if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;
-        const gem::Image ref = gem::to_display(reference(s, cache, without_fire ? 0 : 12), {});
+        const gem::Image ref = gem::to_display(reference(s, cache, wavelengths, reference_spp), {});
         if (check > 0) {
-            const gem::Image finer = gem::to_display(reference(s, cache, check), {});
+            const gem::Image finer = gem::to_display(reference(s, cache, check, reference_spp), {});
             const gem::ImageError e = must(gem::compare_images(ref, finer, {.only_stone = true}));
             std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name,
-                        ("reference, 12 against " + std::to_string(check) + " wavelengths").c_str(),
+                        ("reference, " + std::to_string(wavelengths) + " against " +
+                         std::to_string(check) + " wavelengths")
+                            .c_str(),
                         e.delta_e_mean, e.delta_e_p99);
         }
         if (check_spp > 0) {
-            const int wavelengths = without_fire ? 0 : 12;
             const gem::Image finer =
                 gem::to_display(reference(s, cache, wavelengths, check_spp), {});
             const gem::ImageError e = must(gem::compare_images(ref, finer, {.only_stone = true}));
             std::printf("%-22s %-36s ΔE00 %5.2f  p99 %5.1f\n", s.name,
-                        ("reference, 16 against " + std::to_string(check_spp) + " spp").c_str(),
+                        ("reference, " + std::to_string(reference_spp) + " against " +
+                         std::to_string(check_spp) + " spp")
+                            .c_str(),
                         e.delta_e_mean, e.delta_e_p99);
         }
         if (!images.empty()) {
@@ -311,7 +325,7 @@ int main(int argc, char** argv) {
         }
         for (std::size_t i = 0; i < variants.size(); ++i) {
             double ms = 0.0;
-            const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight, &ms);
+            const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight, msaa, &ms);
             const gem::ImageError e = error_of(picture, ref);
             std::printf("%-22s %-50s ΔE00 %5.2f  p99 %5.1f  %7.0f ms\n", s.name,
                         variants[i].label.c_str(), e.delta_e_mean, e.delta_e_p99, ms);

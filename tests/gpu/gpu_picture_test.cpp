@@ -176,5 +176,45 @@ TEST(GpuPicture, AShiftTranslatesThePictureByWholePixels) {
     EXPECT_LE(differing, compared / 100) << differing << " of " << compared;
 }
 
+// A still view of many frames is their mean: 1024 frames, each pixel mostly dim and now and
+// then bright (as a diamond's fire is from frame to frame), against the mean taken in double.
+// In half floats the running mean drifts once an update is below its rounding step.
+TEST(GpuPicture, AStillViewOfManyFramesIsTheirMean) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 16;
+    const int frames = 1024;
+    const DisplayTransform display{ToneCurve::clip, 2.0};
+    auto hdr = gpu::HdrPicture::make(
+        n, 1, {.samples = 1, .display = display, .glare = 0.0, .still_frames = frames});
+    ASSERT_TRUE(hdr.ok()) << hdr.error();
+    auto picture = gpu::RenderTarget::make(n, 1);
+    ASSERT_TRUE(picture.ok()) << picture.error();
+    std::vector<double> sum(n, 0.0);
+    std::uint32_t state = 12345;
+    const auto next = [&state] {  // a fixed LCG: the same frames every run
+        state = state * 1664525u + 1013904223u;
+        return (state >> 8) / double(1u << 24);
+    };
+    for (int f = 0; f < frames; ++f) {
+        hdr.value().begin_frame(true);
+        hdr.value().bind();
+        for (int x = 0; x < n; ++x) {
+            const double v = next() < 0.03 ? 3.0 : 0.05 + 0.1 * next() * (x + 1) / n;
+            sum[x] += v;
+            fill(x, 0, 1, 1, glm::vec3(static_cast<float>(v)));
+        }
+        ASSERT_TRUE(hdr.value().finish(picture.value()).ok());
+    }
+    const Image out = picture.value().read();
+    for (int x = 0; x < n; ++x) {
+        const double mean = sum[x] / frames;
+        const int want = linear_to_srgb8(to_display(glm::dvec3(mean), display).x);
+        EXPECT_NEAR(linear_to_srgb8(out.at(x, 0).x), want, 1)
+            << "pixel " << x << ", mean " << mean << "; " << hdr.value().describe();
+    }
+    EXPECT_TRUE(gpu::gl_check("mean test").ok());
+}
+
 }  // namespace
 }  // namespace gem

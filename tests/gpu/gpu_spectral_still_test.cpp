@@ -2,12 +2,14 @@
 // frames each trace their own wavelengths, one per channel (optics/spectrum.hpp).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <vector>
 
 #include "geometry/cuts.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/hdr_picture.hpp"
+#include "gpu/picture_frame.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
 #include "render/image_error.hpp"
@@ -60,19 +62,9 @@ Result<Image> still_picture(const Stone& stone, gpu::TraceDispersion fire,
                                       .spectral = fire == gpu::TraceDispersion::spectral,
                                       .still_depth = still_depth});
     if (!hdr) return Error{hdr.error()};
-    for (int f = 0; f < frames; ++f) {
-        hdr.value().begin_frame(true);
-        CameraSettings cs = view();
-        cs.shift += hdr.value().jitter_ndc();
-        auto camera = Camera::make(cs, renderer.value().stone_radius_mm(), kSide, kSide);
-        if (!camera) return Error{camera.error()};
-        hdr.value().bind();
-        auto drawn = renderer.value().render(camera.value(), gpu::FrameWait::frame,
-                                             hdr.value().still_frame());
-        if (!drawn) return Error{drawn.error()};
-        auto finished = hdr.value().finish(target.value());
-        if (!finished) return Error{finished.error()};
-    }
+    auto drawn = gpu::draw_still_picture(renderer.value(), hdr.value(), view(),
+                                         renderer.value().stone_radius_mm(), target.value());
+    if (!drawn) return Error{drawn.error()};
     return target.value().read();
 }
 
@@ -253,6 +245,48 @@ TEST(GpuSpectralStill, EachTraceGoesToTheChannelsItsMixColumnNames) {
     EXPECT_LT(same.value().delta_e_mean, 1e-3);
     // Which trace goes where shows: 420 nm against 660 nm in a diamond's fire.
     EXPECT_GT(other.value().delta_e_mean, 0.5);
+}
+
+// A frame's wavelengths are independent of its sub-pixel offset: for each channel and each
+// axis, the frames split by the side of the pixel they sample and by the half of the
+// channel's range they trace fill all four cells. (Wavelengths ordered as the offsets' own
+// base-2 sequence put every frame in two of them: each wavelength seen from one side only.)
+TEST(GpuSpectralStill, AFramesWavelengthsDoNotFollowItsSubPixelOffset) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    for (const int frames : {16, 64}) {
+        auto hdr = gpu::HdrPicture::make(
+            8, 8,
+            {.samples = 1, .display = {}, .glare = 0.0, .still_frames = frames, .spectral = true});
+        ASSERT_TRUE(hdr.ok()) << hdr.error();
+        std::vector<glm::dvec2> offsets;
+        std::vector<glm::dvec3> nm;
+        for (int f = 0; f < frames; ++f) {
+            hdr.value().begin_frame(true);
+            const gpu::StillFrame still = hdr.value().still_frame();
+            ASSERT_NE(still.wavelengths, nullptr);
+            offsets.push_back(hdr.value().jitter_ndc());
+            nm.push_back(still.wavelengths->nm);
+        }
+        for (int c = 0; c < 3; ++c) {
+            std::vector<double> sorted;
+            for (const glm::dvec3& w : nm) sorted.push_back(w[c]);
+            std::sort(sorted.begin(), sorted.end());
+            const double median = sorted[sorted.size() / 2];
+            for (int axis = 0; axis < 2; ++axis) {
+                int cells[2][2] = {};
+                for (int f = 0; f < frames; ++f) {
+                    ++cells[offsets[f][axis] < 0.0][nm[f][c] < median];
+                }
+                for (const auto& row : cells) {
+                    for (const int count : row) {
+                        EXPECT_GE(count, frames / 8)
+                            << frames << " frames, channel " << c << ", axis " << axis;
+                    }
+                }
+            }
+        }
+    }
 }
 
 }  // namespace

@@ -147,13 +147,20 @@ TEST(OpticsSpectrum, StillFramesStratifyEachChannel) {
         for (std::size_t i = 1; i < v.size(); ++i) EXPECT_GT(v[i], v[i - 1]);  // one a stratum
     }
     // The first frame takes each channel's middle stratum, near its dominant wavelength
-    // (612, 549, 465 nm); the second reaches the other half of the range.
+    // (612, 549, 465 nm); the first five fall in five different fifths of the strata.
     EXPECT_NEAR(still.frame(0).nm.x, 612.0, 25.0);
     EXPECT_NEAR(still.frame(0).nm.y, 549.0, 25.0);
     EXPECT_NEAR(still.frame(0).nm.z, 465.0, 25.0);
     for (int c = 0; c < 3; ++c) {
-        const double a = still.frame(0).nm[c], b = still.frame(1).nm[c];
-        EXPECT_GT(std::abs(a - b), 0.2 * (by_channel[c].back() - by_channel[c].front()));
+        std::vector<bool> fifth_taken(5, false);
+        for (int f = 0; f < 5; ++f) {
+            const auto rank =
+                std::find(by_channel[c].begin(), by_channel[c].end(), still.frame(f).nm[c]) -
+                by_channel[c].begin();
+            const std::size_t fifth = static_cast<std::size_t>(rank * 5 / 16);
+            EXPECT_FALSE(fifth_taken[fifth]) << "channel " << c << ", frame " << f;
+            fifth_taken[fifth] = true;
+        }
     }
 }
 
