@@ -88,12 +88,14 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         if (!accumulate) return Error{accumulate.error()};
         p.accumulate_.emplace(std::move(accumulate).value());
         // Half floats hold a mean of a few dozen frames: frame k moves it by 1 / (k + 1) of
-        // its difference, which falls under half a float16 step (an 11-bit significand) for
-        // ever more pixels as k grows, and the mean stops moving there. On a diamond at depth
-        // 64 (bench_still_picture --still-frames N): 64 frames ΔE00 3.11 in half floats, 3.06
-        // in floats; 1024 frames 4.39 against 3.08. So beyond 64 frames the mean is kept in
-        // floats where the GPU renders and blends them; at the kiosk's 16 the half floats'
-        // bandwidth is enough (ΔE00 0.02 apart).
+        // its difference, which falls under a float16 step (an 11-bit significand) for ever
+        // more pixels as k grows, and each rounding drifts it. A pixel flickering as fire does
+        // ends 10 sRGB steps dark after 1024 frames (GpuPicture.AStillViewOfManyFramesIsTheirMean).
+        // On a diamond at depth 64 (bench_still_picture --still-frames N, the wavelengths then
+        // in base-2 order): 64 frames ΔE00 3.11 in half floats, 3.06 in floats; 1024 frames
+        // 4.39 against 3.08. So beyond 64 frames the mean is kept in floats where the GPU
+        // renders and blends them; at the kiosk's 16 the half floats' bandwidth is enough
+        // (ΔE00 0.02 apart).
         p.mean_high_precision_ = options.still_frames > kHalfFloatMeanFrames &&
                                  gl_has_extension("GL_EXT_color_buffer_float") &&
                                  gl_has_extension("GL_EXT_float_blend");

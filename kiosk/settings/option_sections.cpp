@@ -209,7 +209,7 @@ constexpr KeySpec<PictureConfig> kPictureKeys[] = {
     {"exposure_ev", [](ConfigReader& r, const Node& n, Key k,
                        PictureConfig& o) { r.number(n, k, -16.0, 16.0, o.exposure_ev); }},
     {"still_frames", [](ConfigReader& r, const Node& n, Key k,
-                        PictureConfig& o) { r.integer(n, k, 1, 256, o.still_frames); }},
+                        PictureConfig& o) { r.integer(n, k, 1, 1024, o.still_frames); }},
     {"spectral_stills", [](ConfigReader& r, const Node& n, Key k,
                            PictureConfig& o) { r.boolean(n, k, o.spectral_stills); }},
     {"still_depth", [](ConfigReader& r, const Node& n, Key k,

@@ -16,7 +16,7 @@
 //   bench_still_picture [--frames N] [--depth D] [--min-weight W] [--still-frames N]
 //                       [--still-depth D] [--cache DIR] [--only TEXT] [--size N] [--images DIR]
 //                       [--reference-check N] [--reference-check-spp N] [--without-fire]
-//                       [--reference-wavelengths N] [--reference-spp N]
+//                       [--reference-wavelengths N] [--reference-spp N] [--msaa N]
 //
 // Each picture's line ends with its frames' summed time (glFinish-bounded, the programs' first
 // use included). --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how

@@ -107,3 +107,30 @@ do for [sc in path_scenes] {
          with points pt 8 ps 1.3 lc rgb '#17becf' title 'blend, vs reference at n(D)'
 }
 unset multiplot
+
+# 4. The still picture: error against the time to the settled picture (the summed time of its
+# frames), against the reference averaged over the pixel (16 samples). Per scene: the moving
+# frame, 16 still frames with exact fire, and 16 with spectral fire at still depths 8, 16, 32.
+if (!exists("still_scenes")) still_scenes = 'diamond-faceup diamond-tilted oval-sapphire heart-ruby'
+set output out.'/still-picture.png'
+set terminal pngcairo size 1150,520 font 'DejaVu Sans,11' linewidth 1.5
+set title 'The still picture against a 16-sample reference'
+set key outside right center vertical font ',10'
+set logscale x
+set autoscale x
+set format x '%g'
+set xlabel 'summed time of the frames, ms (log)'
+set ylabel 'mean ΔE00 on the stone (log)'
+set arrow 1 from graph 0, first 2 to graph 1, first 2 nohead dt 2 lc rgb '#888888'
+scol(sc) = sc eq 'diamond-faceup' ? '#ff7f0e' : sc eq 'diamond-tilted' ? '#d62728' : \
+           sc eq 'oval-sapphire' ? '#0072b2' : '#cc79a7'
+still(sc, frames, disp) = is(1,'still') && is(2,sc) && $13 == frames && $12 == disp
+plot for [sc in still_scenes] csv every ::1 using (sel(still(sc, 1, 0), $15)):19 \
+       with points pt 4 ps 1.2 lc rgb scol(sc) title sc.': moving (1 frame)', \
+     for [sc in still_scenes] '' every ::1 using (sel(still(sc, 16, 0), $15)):19 \
+       with points pt 5 ps 1.2 lc rgb scol(sc) title sc.': 16 frames, exact fire', \
+     for [sc in still_scenes] '' every ::1 using (sel(still(sc, 16, 1), $15)):19 \
+       with linespoints pt 7 ps 1.2 lc rgb scol(sc) title sc.': 16 frames, spectral, depth 8–32', \
+     for [sc in still_scenes] '' every ::1 using (sel(still(sc, 16, 1), $15)):19:(sprintf('d%d', $10)) \
+       with labels offset 0,0.8 font ',8' notitle
+unset arrow 1

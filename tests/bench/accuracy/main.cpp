@@ -62,7 +62,9 @@ int main(int argc, char** argv) {
     if (!charts.empty()) {
         std::filesystem::create_directories(charts);
         const std::string scenes =
-            options.quick ? "; sweep_scene='diamond-faceup'; path_scenes='diamond-faceup'" : "";
+            options.quick ? "; sweep_scene='diamond-faceup'; path_scenes='diamond-faceup'; "
+                            "still_scenes='diamond-faceup'"
+                          : "";
         const std::string command = "gnuplot -e \"csv='" + csv + "'; out='" + charts + "'" +
                                     scenes + "\" " + GEM_ACCURACY_CHARTS;
         if (std::system(command.c_str()) != 0) {

@@ -72,13 +72,16 @@ void print_header() {
 }
 
 void print_row(const Row& r) {
+    // mode: a table's view choice, a still picture's frames averaged.
+    const std::string mode = r.method == "table"  ? (r.blend ? "blend" : "near")
+                             : r.study == "still" ? "x" + std::to_string(r.samples)
+                                                  : "-";
     std::printf(
         "%-9s %-15s %-7s %5.1f %-9s %4d %4g %-5s %3d %7g %-4s %-9s %9.1f %8.2f %6.1f "
         "%6.1f %6.2f %6.1f %6.1f %7.2f\n",
         r.study.c_str(), r.scene.c_str(), r.view.c_str(), r.offset_deg, r.method.c_str(), r.level,
-        r.spacing_deg, r.method == "table" ? (r.blend ? "blend" : "near") : "-", r.depth,
-        r.threshold, r.dispersion ? "on" : "off", r.compared_with.c_str(), r.frame_ms,
-        double(r.db_bytes) / 1e6, r.build_s,
+        r.spacing_deg, mode.c_str(), r.depth, r.threshold, r.dispersion ? "on" : "off",
+        r.compared_with.c_str(), r.frame_ms, double(r.db_bytes) / 1e6, r.build_s,
         std::isfinite(r.error.psnr_db) ? r.error.psnr_db : 99.0, r.error.delta_e_mean,
         r.error.delta_e_p99, 100.0 * r.error.share_visible,
         r.has_nd ? r.error_nd.delta_e_mean : 0.0);

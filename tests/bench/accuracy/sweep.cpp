@@ -9,6 +9,7 @@
 #include "reference_images.hpp"
 #include "scene_references.hpp"
 #include "scenes.hpp"
+#include "still_pictures.hpp"
 #include "views.hpp"
 
 namespace gem::accuracy {
@@ -268,6 +269,13 @@ Result<std::vector<Row>> run_sweep(const SweepOptions& options) {
         auto r = reference_rows(ctx, scene, refs, grid, on,
                                 scene.name == "diamond-faceup" || scene.name == "oval-sapphire");
         if (!r) return Error{r.error()};
+        if (!scene.ring) {
+            auto ref = refs.get(on);
+            if (!ref) return Error{ref.error()};
+            r = still_rows(scene, studio, on, ref.value()->mask, options.image, options.quick,
+                           rows);
+            if (!r) return Error{r.error()};
+        }
         if (!options.quick) {
             r = quantisation_rows(ctx, scene, studio, base_db.value(), base, refs, on);
             if (!r) return Error{r.error()};
