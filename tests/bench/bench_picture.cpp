@@ -1,10 +1,13 @@
 // Figures of the shop window's picture (gpu/hdr_picture.hpp), printed, not asserted.
 //
-//  1. What each new pass costs at the kiosk's 1920×1080 start view (the round diamond in its
-//     parametric ring, framed as the kiosk frames it): the scene drawn at 1 and 4 samples, then
-//     the resolve, the still view's running mean, the glare pyramid and the tone curve, each
-//     bounded by glFinish; medians of --frames frames, trace (depth 8, first-order fire) and
-//     phong.
+//  1. What each pass costs at the kiosk's 1920×1080 start view (the round diamond in its
+//     parametric ring, framed as the kiosk frames it), and at zoom 0.5 (the piece at half the
+//     size): the scene (its stone and metal passes shown apart) drawn at 1 sample without glare
+//     and at 4× MSAA with glare 0.04, then the resolve, the still view's running mean, the
+//     glare pyramid and the tone curve, each bounded by glFinish; medians of --frames frames,
+//     trace (depth 8, first-order fire) and phong; and the share of a moving frame the passes
+//     after the scene take. The bench's last line is for a script to read, the trace at 4×
+//     MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5 costs R of zoom 1".
 //  2. Edges against the CPU reference at 16 samples per pixel, the loose diamond at 256²
 //     (zoom 1, 40° elevation, the studio, no glare, the same tone curve on both): the mean
 //     8-bit error on its edge pixels (where the reference's own single centre sample is more
@@ -73,54 +76,109 @@ gem::gpu::FrameRenderer make_renderer(const std::string& method, const gem::Ston
     return must(gem::gpu::FrameRenderer::make(std::move(setup)));
 }
 
-void pass_costs(const gem::Stone& stone, const gem::Environment& environment, int frames) {
+// One configuration's medians: the scene (stone, ring and background), its stone and metal
+// passes within it, and each finishing pass.
+struct PassCosts {
+    double scene = 0.0, stone = 0.0, metal = 0.0, resolve = 0.0, mean = 0.0, glare = 0.0,
+           tone = 0.0;
+    // A moving frame: the scene and the passes after it (the still view's mean is not in it).
+    double total() const { return scene + resolve + glare + tone; }
+    double finishing() const { return resolve + glare + tone; }
+};
+
+PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
+                      double zoom, int samples, double glare, int frames,
+                      const gem::gpu::RenderTarget& picture) {
+    const int w = picture.width(), h = picture.height();
+    auto hdr = must(gem::gpu::HdrPicture::make(w, h, options(samples, glare, 16)));
+    std::vector<double> scene, stone, metal, resolve, mean, glare_ms, tone;
+    for (int f = -1; f < frames; ++f) {
+        gem::kiosk::ViewState view = gem::kiosk::kStartView;
+        view.zoom = zoom;
+        // Odd frames still (the running mean's pass), even ones turned.
+        view.azimuth_deg += (f / 2) * 1.0;
+        hdr.begin_frame(f % 2 == 1);
+        auto cs = gem::kiosk::framed_camera(view, framing);
+        cs.shift += hdr.jitter_ndc();
+        const auto camera = must(gem::Camera::make(cs, renderer.scene_radius_mm(), w, h));
+        hdr.bind();
+        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+        const gem::gpu::FrameStats drawn =
+            must(renderer.render(camera, gem::gpu::FrameWait::passes));
+        gem::gpu::FinishTimes t;
+        must(hdr.finish(picture, &t));
+        if (f < 0) continue;
+        scene.push_back(drawn.cpu_ms);
+        stone.push_back(drawn.stone_ms);
+        metal.push_back(drawn.metal_ms);
+        (f % 2 == 1 ? mean : resolve).push_back(t.resolve_ms);
+        glare_ms.push_back(t.glare_ms);
+        tone.push_back(t.tone_ms);
+    }
+    // The resolve is the moving frames' (a blit); mean is what the running mean's pass adds
+    // on still frames.
+    return {median(scene),
+            median(stone),
+            median(metal),
+            median(resolve),
+            median(mean) - median(resolve),
+            median(glare_ms),
+            median(tone)};
+}
+
+// The line a script reads: the trace at 4× MSAA with glare, the passes after the scene as a
+// share of the frame at zoom 1, and the frame at zoom 0.5 against zoom 1.
+struct Summary {
+    double finishing_share = 0.0;
+    double half_zoom_ratio = 0.0;
+};
+
+Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment, int frames) {
     const int w = 1920, h = 1080;
     const auto ring = must(gem::gpu::make_ring({}, stone));
     std::printf(
-        "\n1. passes at %d×%d, the kiosk's start view of the diamond in its ring "
-        "(median ms of %d frames)\n",
+        "\n1. passes at %d×%d, the kiosk's start view of the diamond in its ring and the same "
+        "at zoom 0.5 (median ms of %d frames; each pass bounded by glFinish; finishing: the "
+        "passes after the scene, share of a moving frame)\n",
         w, h, frames);
-    std::printf("%-8s %5s %10s %9s %9s %9s %9s %9s\n", "method", "MSAA", "stone+ring", "resolve",
-                "mean", "glare", "tone", "total");
+    std::printf("%-6s %-8s %-12s %7s %7s %7s %8s %7s %7s %7s %8s %10s\n", "zoom", "method",
+                "picture", "scene", "stone", "metal", "resolve", "mean", "glare", "tone", "total",
+                "finishing");
     auto picture = must(gem::gpu::RenderTarget::make(w, h));
+    struct Look {
+        const char* name;
+        int samples;
+        double glare;
+    };
+    const Look looks[] = {{"1 sample", 1, 0.0}, {"4×, glare", 4, 0.04}};
+    double kiosk_total[2] = {};  // trace, 4× MSAA and glare: zoom 1, zoom 0.5
+    double kiosk_finishing = 0.0;
     for (const char* method : {"phong", "trace"}) {
         auto renderer = make_renderer(method, stone, environment, &ring);
         std::vector<glm::dvec3> ring_points(ring.positions.begin(), ring.positions.end());
         const gem::kiosk::Framing framing =
             gem::kiosk::frame_ring(stone.vertices, ring_points, gem::kiosk::kStartView, {w, h},
                                    renderer.scene_radius_mm(), 0.25);
-        for (int samples : {1, 4}) {
-            auto hdr = must(gem::gpu::HdrPicture::make(w, h, options(samples, 0.04, 16)));
-            std::vector<double> scene, resolve, mean, glare, tone;
-            for (int f = -1; f < frames; ++f) {
-                gem::kiosk::ViewState view = gem::kiosk::kStartView;
-                // Odd frames still (the running mean's pass), even ones turned.
-                view.azimuth_deg += (f / 2) * 1.0;
-                hdr.begin_frame(f % 2 == 1);
-                auto cs = gem::kiosk::framed_camera(view, framing);
-                cs.shift += hdr.jitter_ndc();
-                const auto camera = must(gem::Camera::make(cs, renderer.scene_radius_mm(), w, h));
-                hdr.bind();
-                glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-                glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                const double drawn =
-                    must(renderer.render(camera, gem::gpu::FrameWait::frame)).cpu_ms;
-                gem::gpu::FinishTimes t;
-                must(hdr.finish(picture, &t));
-                if (f < 0) continue;
-                scene.push_back(drawn);
-                (f % 2 == 1 ? mean : resolve).push_back(t.resolve_ms);
-                glare.push_back(t.glare_ms);
-                tone.push_back(t.tone_ms);
+        for (int z = 0; z < 2; ++z) {
+            const double zoom = z == 0 ? 1.0 : 0.5;
+            for (const Look& look : looks) {
+                const PassCosts c =
+                    time_passes(renderer, framing, zoom, look.samples, look.glare, frames, picture);
+                std::printf(
+                    "%-6.2g %-8s %-12s %7.1f %7.1f %7.1f %8.1f %7.1f %7.1f %7.1f %8.1f "
+                    "%9.0f%%\n",
+                    zoom, method, look.name, c.scene, c.stone, c.metal, c.resolve, c.mean, c.glare,
+                    c.tone, c.total(), 100.0 * c.finishing() / c.total());
+                std::fflush(stdout);
+                if (std::strcmp(method, "trace") == 0 && look.samples == 4) {
+                    kiosk_total[z] = c.total();
+                    if (z == 0) kiosk_finishing = c.finishing() / c.total();
+                }
             }
-            // The resolve column is the moving frames' (blit only); mean adds the running
-            // mean's pass on still frames.
-            const double total = median(scene) + median(resolve) + median(glare) + median(tone);
-            std::printf("%-8s %5d %10.1f %9.1f %9.1f %9.1f %9.1f %9.1f\n", method, hdr.samples(),
-                        median(scene), median(resolve), median(mean) - median(resolve),
-                        median(glare), median(tone), total);
         }
     }
+    return {kiosk_finishing, kiosk_total[1] / kiosk_total[0]};
 }
 
 struct Frames {
@@ -277,7 +335,9 @@ int main(int argc, char** argv) {
     const auto stone = must(gem::make_cut(gem::default_cut_params(gem::CutShape::round_brilliant),
                                           *gem::find_material("diamond")));
     const gem::Environment environment = gem::Environment::studio();
-    pass_costs(stone, environment, std::max(frames, 2));
+    const Summary summary = pass_costs(stone, environment, std::max(frames, 2));
     edges_and_flicker(stone, environment, std::max(turn, 2));
+    std::printf("bench_picture: finishing %.0f%% of the frame; zoom 0.5 costs %.2f of zoom 1\n",
+                100.0 * summary.finishing_share, summary.half_zoom_ratio);
     return 0;
 }
