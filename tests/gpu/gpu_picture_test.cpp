@@ -216,5 +216,32 @@ TEST(GpuPicture, AStillViewOfManyFramesIsTheirMean) {
     EXPECT_TRUE(gpu::gl_check("mean test").ok());
 }
 
+// MSAA draws the moving frames and a still view's first (the moving view's own); the still
+// frames after it are point samples, whose mean over the sub-pixel offsets has no bias at the
+// facet edges MSAA shades at the pixel's centre (hdr_picture.hpp).
+TEST(GpuPicture, AStillViewsFramesAfterItsFirstArePointSamples) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto hdr =
+        gpu::HdrPicture::make(8, 8, {.samples = 4, .display = {}, .glare = 0.0, .still_frames = 4});
+    ASSERT_TRUE(hdr.ok()) << hdr.error();
+    if (hdr.value().samples() <= 1) GTEST_SKIP() << "no MSAA here: " << hdr.value().describe();
+    const auto bound_samples = [&] {
+        hdr.value().bind();
+        GLint samples = -1;
+        glGetIntegerv(GL_SAMPLES, &samples);
+        return samples;
+    };
+    hdr.value().begin_frame(false);
+    EXPECT_EQ(bound_samples(), hdr.value().samples()) << "a moving frame";
+    hdr.value().begin_frame(true);
+    EXPECT_EQ(bound_samples(), hdr.value().samples()) << "a still view's first frame";
+    for (int f = 1; f < 4; ++f) {
+        hdr.value().begin_frame(true);
+        EXPECT_EQ(bound_samples(), 0) << "still frame " << f;
+    }
+    EXPECT_TRUE(gpu::gl_check("point samples test").ok());
+}
+
 }  // namespace
 }  // namespace gem
