@@ -28,9 +28,13 @@ struct FrameSetup {
     ShadingSettings shading;
     TraceSettings trace;  // trace: depth, weights, threshold
     TraceDispersion trace_dispersion = TraceDispersion::none;
-    // trace: a non-convex stone through its triangles, not its convex pieces (a benchmark's
-    // comparison; trace_method.hpp).
-    bool trace_triangles = false;
+    // trace: how exits are found (trace_method.hpp). `measured`: a convex stone by its fastest
+    // search, timed when the renderer is made (so two renderers may choose differently, each
+    // exact to float rounding), a non-convex one by its convex pieces. A convex search named
+    // (walk, constants, folded) pins convex stones to it, as a comparison of two pictures
+    // needs; `triangles` traces non-convex stones through their triangles (a benchmark's
+    // comparison).
+    ExitSearch trace_search = ExitSearch::measured;
     TableOptions table;
     // What surrounds everything; must outlive the renderer (an orthographic frame's background
     // is its radiance along the view).

@@ -221,14 +221,17 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
 }
 
 std::string HdrPicture::describe() const {
+    std::string mean;
+    if (accumulate_ && options_.still_frames > kHalfFloatMeanFrames) {
+        mean = mean_high_precision_ ? " (mean in RGBA32F)"
+                                    : " (mean in RGBA16F, no float blending: it rounds past " +
+                                          std::to_string(kHalfFloatMeanFrames) + " frames)";
+    }
     char line[320];
     std::snprintf(
         line, sizeof line, "%s, %d× MSAA, %d frames a still view%s%s%s, %s, %s at %+.1f EV",
         high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
-        accumulate_ ? options_.still_frames : 1,
-        !accumulate_ || options_.still_frames <= kHalfFloatMeanFrames ? ""
-        : mean_high_precision_                                        ? " (mean in RGBA32F)"
-                               : " (mean in RGBA16F: no float blending, it rounds past 64 frames)",
+        accumulate_ ? options_.still_frames : 1, mean.c_str(),
         spectrum_ ? ", each its own wavelengths" : "",
         accumulate_ && options_.still_depth > 0
             ? (", traced to depth " + std::to_string(options_.still_depth)).c_str()

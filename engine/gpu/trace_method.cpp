@@ -355,12 +355,20 @@ namespace {
 class TraceStones final : public StoneMethod {
   public:
     TraceStones(const FrameSetup& setup, Program depth)
-        : trace_(setup.trace),
-          search_(setup.trace_triangles ? ExitSearch::triangles : ExitSearch::measured),
-          depth_(std::move(depth)) {}
+        : trace_(setup.trace), search_(setup.trace_search), depth_(std::move(depth)) {}
+
+    // FrameSetup::trace_search for one kind: a convex search for a convex stone, the pieces or
+    // the triangles for one that is not.
+    ExitSearch search_for(const Stone& stone) const {
+        const bool convex_search = search_ == ExitSearch::walk ||
+                                   search_ == ExitSearch::constants ||
+                                   search_ == ExitSearch::folded;
+        if (stone.convex) return convex_search ? search_ : ExitSearch::measured;
+        return search_ == ExitSearch::triangles ? ExitSearch::triangles : ExitSearch::measured;
+    }
 
     Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
-        auto made = TraceMethod::make(stone, stone.convex ? ExitSearch::measured : search_);
+        auto made = TraceMethod::make(stone, search_for(stone));
         if (!made) return Error{made.error()};
         methods_.push_back(std::make_unique<TraceMethod>(std::move(made).value()));
         convex_.push_back(stone.convex);

@@ -147,7 +147,8 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
                             {{-30.0, 50.0, -20.0}, false, {1.5, 1.5, 1.5}}};
     setup.trace.max_depth = c.depth;
     setup.trace_dispersion = c.dispersion;
-    setup.trace_triangles = c.triangles;
+    setup.trace_search =
+        c.triangles ? gem::gpu::ExitSearch::triangles : gem::gpu::ExitSearch::measured;
     setup.table.blend = c.blend;
     setup.environment = &environment;
     if (v.ring) setup.ring = &ring;
