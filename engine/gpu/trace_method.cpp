@@ -233,7 +233,10 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
         m.search_ = used;
         return m;
     }
-    if (search != ExitSearch::measured) {
+    // A non-convex stone's searches (pieces, triangles) mean nothing to a convex one: its
+    // fastest is measured.
+    if (search != ExitSearch::measured && search != ExitSearch::pieces &&
+        search != ExitSearch::triangles) {
         auto programs = convex_programs(stone, search);
         if (!programs) return Error{"trace: the stone's planes are not mirrored to fold them"};
         TraceMethod m(std::move(geometry).value(), std::move(programs).value(), true);
@@ -357,18 +360,8 @@ class TraceStones final : public StoneMethod {
     TraceStones(const FrameSetup& setup, Program depth)
         : trace_(setup.trace), search_(setup.trace_search), depth_(std::move(depth)) {}
 
-    // FrameSetup::trace_search for one kind: a convex search for a convex stone, the pieces or
-    // the triangles for one that is not.
-    ExitSearch search_for(const Stone& stone) const {
-        const bool convex_search = search_ == ExitSearch::walk ||
-                                   search_ == ExitSearch::constants ||
-                                   search_ == ExitSearch::folded;
-        if (stone.convex) return convex_search ? search_ : ExitSearch::measured;
-        return search_ == ExitSearch::triangles ? ExitSearch::triangles : ExitSearch::measured;
-    }
-
     Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
-        auto made = TraceMethod::make(stone, search_for(stone));
+        auto made = TraceMethod::make(stone, search_);
         if (!made) return Error{made.error()};
         methods_.push_back(std::make_unique<TraceMethod>(std::move(made).value()));
         convex_.push_back(stone.convex);

@@ -51,7 +51,8 @@ class TraceMethod {
     // Uploads the stone (StoneGeometry) and builds the program (the convex variant `search`
     // names: an error for `folded` on a stone that does not fold; `measured` builds each and
     // keeps the fastest on a 64×64 test picture, drawn off screen; the caller's framebuffer
-    // and viewport are kept. A non-convex stone's pieces unless `search` is `triangles`).
+    // and viewport are kept, as for `pieces` and `triangles`, which name no convex search. A
+    // non-convex stone's pieces unless `search` is `triangles`, whatever convex search it names).
     static Result<TraceMethod> make(const Stone& stone, ExitSearch search = ExitSearch::measured);
     // Draws the stone layer for `frame` into the bound framebuffer (viewport set by caller).
     // `trace` gives depth, weight threshold, weight model (fresnel or thesis R/T factors) and

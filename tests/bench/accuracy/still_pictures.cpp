@@ -1,5 +1,7 @@
 #include "still_pictures.hpp"
 
+#include <optional>
+
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/picture_frame.hpp"
@@ -41,17 +43,25 @@ Result<bool> still_rows(const Scene& scene, const Environment& environment, cons
     const CameraSettings camera = frame_camera(scene.stone, view, image);
     auto target = gpu::RenderTarget::make(image, image);
     if (!target) return Error{target.error()};
+    // One renderer per fire (the points come grouped by it): making one times the stone's
+    // exit searches and builds its programs.
+    std::optional<gpu::FrameRenderer> renderer;
+    gpu::TraceDispersion renderer_fire = gpu::TraceDispersion::none;
     for (const StillPoint& p : points) {
-        gpu::FrameSetup setup;
-        setup.method = "trace";
-        setup.stone = scene.stone;
-        setup.material = scene.stone.material;
-        setup.shading = scene_lights();
-        setup.trace.max_depth = kMovingDepth;
-        setup.trace_dispersion = p.fire;
-        setup.environment = &environment;
-        auto renderer = gpu::FrameRenderer::make(std::move(setup));
-        if (!renderer) return Error{renderer.error()};
+        if (!renderer || renderer_fire != p.fire) {
+            gpu::FrameSetup setup;
+            setup.method = "trace";
+            setup.stone = scene.stone;
+            setup.material = scene.stone.material;
+            setup.shading = scene_lights();
+            setup.trace.max_depth = kMovingDepth;
+            setup.trace_dispersion = p.fire;
+            setup.environment = &environment;
+            auto made = gpu::FrameRenderer::make(std::move(setup));
+            if (!made) return Error{made.error()};
+            renderer.emplace(std::move(made).value());
+            renderer_fire = p.fire;
+        }
         auto picture = gpu::HdrPicture::make(image, image,
                                              {.samples = 4,
                                               .display = {},
@@ -61,14 +71,13 @@ Result<bool> still_rows(const Scene& scene, const Environment& environment, cons
                                               .still_depth = p.depth});
         if (!picture) return Error{picture.error()};
         // The programs' first use is not the still picture's cost.
-        auto warm = gpu::draw_picture_frame(renderer.value(), picture.value(), camera,
-                                            renderer.value().stone_radius_mm(), false,
-                                            gpu::FrameWait::frame, target.value());
+        auto warm =
+            gpu::draw_picture_frame(*renderer, picture.value(), camera, renderer->stone_radius_mm(),
+                                    false, gpu::FrameWait::frame, target.value());
         if (!warm) return Error{warm.error()};
         double ms = 0.0;
-        auto drawn =
-            gpu::draw_still_picture(renderer.value(), picture.value(), camera,
-                                    renderer.value().stone_radius_mm(), target.value(), &ms);
+        auto drawn = gpu::draw_still_picture(*renderer, picture.value(), camera,
+                                             renderer->stone_radius_mm(), target.value(), &ms);
         if (!drawn) return Error{drawn.error()};
         Row row;
         row.study = "still";
