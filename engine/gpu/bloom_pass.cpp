@@ -9,7 +9,6 @@ namespace gem::gpu {
 
 namespace {
 
-constexpr int kMaxLevels = 6;  // at 1080p the widest blur spans about a tenth of the height
 constexpr int kMinSide = 8;
 
 }  // namespace
@@ -43,7 +42,41 @@ Result<BloomPass> BloomPass::make(int width, int height) {
     return b;
 }
 
-Result<bool> BloomPass::run(GLuint scene) {
+BloomPass::LevelRegions BloomPass::level_regions(const PixelRect& region) const {
+    LevelRegions out;
+    // Down (shaders/bloom_down.frag): texel j of a level samples its source at (j + 0.5) · 2
+    // source texels, taps ±2 texels about it, bilinear.
+    PixelRect source = region;
+    for (std::size_t i = 0; i < levels_.size(); ++i) {
+        out[i] = affected_by(source, glm::dvec2(2.0), -2.0, 2.0, size_of(i));
+        source = out[i];
+    }
+    // Up (shaders/bloom_up.frag): texel j samples the smaller level at (j + 0.5) · its size /
+    // this level's size, taps ±1 of its texels, bilinear.
+    for (std::size_t i = levels_.size() - 1; i-- > 0;) {
+        const glm::dvec2 scale = glm::dvec2(size_of(i + 1)) / glm::dvec2(size_of(i));
+        out[i] = united(out[i], affected_by(out[i + 1], scale, -1.0, 1.0, size_of(i)));
+    }
+    return out;
+}
+
+PixelRect BloomPass::reach(const PixelRect& content) const {
+    const LevelRegions regions = level_regions(content);
+    // shaders/finish.frag samples the top level at the pixel's centre, bilinear.
+    const glm::dvec2 scale = glm::dvec2(size_of(0)) / glm::dvec2(width_, height_);
+    return united(content, affected_by(regions[0], scale, 0.0, 0.0, {width_, height_}));
+}
+
+Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& content) {
+    const PixelRect whole = PixelRect::whole(width_, height_);
+    const PixelRect region = damage_.rewrite(content, whole);
+    // The whole picture reaches every level whole.
+    const LevelRegions regions = level_regions(region);
+    const auto scissor = [&](std::size_t i) {
+        const PixelRect& r = regions[i];
+        glScissor(r.x0, r.y0, r.width(), r.height());
+    };
+    glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     glBindVertexArray(empty_.get());
@@ -56,6 +89,7 @@ Result<bool> BloomPass::run(GLuint scene) {
         const Level& level = levels_[i];
         glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
         glViewport(0, 0, level.width, level.height);
+        scissor(i);
         glBindTexture(GL_TEXTURE_2D, source);
         down_.set("u_source_texel", source_texel);
         down_.set("u_karis", i == 0 ? 1 : 0);
@@ -73,6 +107,7 @@ Result<bool> BloomPass::run(GLuint scene) {
         const Level& level = levels_[i];
         glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
         glViewport(0, 0, level.width, level.height);
+        scissor(i);
         glBindTexture(GL_TEXTURE_2D, smaller.texture.get());
         up_.set("u_source_texel", glm::vec2(1.0f / static_cast<float>(smaller.width),
                                             1.0f / static_cast<float>(smaller.height)));

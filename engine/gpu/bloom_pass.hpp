@@ -4,9 +4,12 @@
 // level then holds the sum of `levels()` ever wider blurs of the picture, each with the
 // picture's energy; shaders/finish.frag mixes their mean in.
 
+#include <array>
+#include <optional>
 #include <vector>
 
 #include "gpu/gl_handles.hpp"
+#include "gpu/pixel_rect.hpp"
 #include "gpu/program.hpp"
 #include "util/result.hpp"
 
@@ -18,8 +21,18 @@ class BloomPass {
     // Errors: RGBA16F not renderable, a shader that does not build.
     static Result<BloomPass> make(int width, int height);
 
-    // Filters `scene` (an RGBA16F texture of the picture's size) into the pyramid.
-    Result<bool> run(GLuint scene);
+    // Filters `scene` (an RGBA16F texture of the picture's size) into the pyramid. `content`:
+    // where the scene differs from one flat colour, which it was everywhere else the last time
+    // too (nullopt: anywhere); each level is then rewritten only where this content or the
+    // last run's reaches it (SurfaceDamage). Leaves the scissor test on.
+    Result<bool> run(GLuint scene, const std::optional<PixelRect>& content = std::nullopt);
+    // The picture's pixels whose glare reads anything from the scene's pixels in `content`,
+    // those included: where the glare of a piece on a flat background differs from the
+    // background's own.
+    PixelRect reach(const PixelRect& content) const;
+    // The last run's content is unknown to the next (the pyramid was filled from another
+    // background): it is rewritten whole.
+    void forget() { damage_.forget(); }
     GLuint glare_texture() const { return levels_.front().texture.get(); }
     int levels() const { return static_cast<int>(levels_.size()); }
 
@@ -31,11 +44,22 @@ class BloomPass {
         int height = 0;
     };
     BloomPass(Program down, Program up) : down_(std::move(down)), up_(std::move(up)) {}
+    glm::ivec2 size_of(std::size_t level) const {
+        return {levels_[level].width, levels_[level].height};
+    }
+    // Each level's texels that read anything of the picture's `region`, through the filters
+    // down and then back up (the up pass adds into what the down pass wrote, so both rewrite
+    // the same texels): a level's region is what its own downsample reaches and what the
+    // upsampled smaller level reaches.
+    static constexpr int kMaxLevels = 6;  // at 1080p the widest blur spans a tenth of the height
+    using LevelRegions = std::array<PixelRect, kMaxLevels>;
+    LevelRegions level_regions(const PixelRect& region) const;
 
     Program down_;
     Program up_;
     VertexArray empty_;
     std::vector<Level> levels_;
+    SurfaceDamage damage_;
     int width_ = 0;
     int height_ = 0;
 };

@@ -176,6 +176,8 @@ Result<EglContext> EglContext::window(EGLenum platform, void* native_display, vo
     if (create_surface == nullptr)
         return Error{"EGL: eglCreatePlatformWindowSurfaceEXT is missing"};
     ctx.surface_ = create_surface(ctx.display_, chosen, native_window, nullptr);
+    ctx.buffer_age_ =
+        has_extension(eglQueryString(ctx.display_, EGL_EXTENSIONS), "EGL_EXT_buffer_age");
     if (ctx.surface_ == EGL_NO_SURFACE) return egl_failure("eglCreatePlatformWindowSurfaceEXT");
     if (!eglMakeCurrent(ctx.display_, ctx.surface_, ctx.surface_, ctx.context_)) {
         return egl_failure("eglMakeCurrent");
@@ -194,6 +196,7 @@ EglContext& EglContext::operator=(EglContext&& other) noexcept {
         context_ = std::exchange(other.context_, EGL_NO_CONTEXT);
         surface_ = std::exchange(other.surface_, EGL_NO_SURFACE);
         window_ = std::exchange(other.window_, false);
+        buffer_age_ = std::exchange(other.buffer_age_, false);
     }
     return *this;
 }
@@ -217,6 +220,13 @@ Result<bool> EglContext::swap_buffers() const {
     if (!window_) return true;
     if (!eglSwapBuffers(display_, surface_)) return egl_failure("eglSwapBuffers");
     return true;
+}
+
+std::optional<int> EglContext::buffer_age() const {
+    if (!window_ || !buffer_age_) return std::nullopt;
+    EGLint age = 0;
+    if (!eglQuerySurface(display_, surface_, EGL_BUFFER_AGE_EXT, &age)) return std::nullopt;
+    return static_cast<int>(age);
 }
 
 std::string EglContext::description() const {

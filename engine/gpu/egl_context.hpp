@@ -4,6 +4,7 @@
 // needed: llvmpipe renders), falling back to the default display with a 1×1 pbuffer; the
 // kiosk makes a window surface on a GBM device (docs/design.md, "Layout": display).
 
+#include <optional>
 #include <string>
 
 #include <EGL/egl.h>
@@ -30,6 +31,10 @@ class EglContext {
 
     // Presents the window surface; a no-op headless. Errors name the EGL error.
     Result<bool> swap_buffers() const;
+    // How many frames ago the window surface's back buffer was drawn (EGL_EXT_buffer_age,
+    // queried after it is bound for drawing): 0 when its content is undefined. Nullopt where
+    // EGL cannot say (no extension, no window): the whole buffer must then be drawn.
+    std::optional<int> buffer_age() const;
     // "llvmpipe (LLVM 15.0.6, 256 bits) | OpenGL ES 3.2 Mesa 22.3.6"
     std::string description() const;
     EGLDisplay display() const { return display_; }
@@ -42,6 +47,7 @@ class EglContext {
     EGLContext context_ = EGL_NO_CONTEXT;
     EGLSurface surface_ = EGL_NO_SURFACE;
     bool window_ = false;
+    bool buffer_age_ = false;  // EGL_EXT_buffer_age on a window surface
 };
 
 // "EGL_BAD_ALLOC (0x3003)".

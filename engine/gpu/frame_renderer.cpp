@@ -1,6 +1,7 @@
 #include "gpu/frame_renderer.hpp"
 
 #include <chrono>
+#include <cmath>
 #include <vector>
 
 #include "gpu/gl_check.hpp"
@@ -137,6 +138,31 @@ Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
     return update_ring_cube();
 }
 
+std::optional<glm::vec3> FrameRenderer::flat_background(const Camera& camera) const {
+    // An orthographic camera sees the environment along one direction only, so its background
+    // is one colour: a clear, not a pass of cube lookups over every pixel (8 ms a frame at
+    // 1024² on llvmpipe, whatever the stone covers). The studio's is the same colour all round
+    // a turn at one elevation.
+    if (setup_.background_colour) return setup_.background_colour;
+    if (camera.orthographic()) return glm::vec3(setup_.environment->radiance(camera.forward()));
+    return std::nullopt;
+}
+
+std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
+    const std::optional<glm::vec3> background = flat_background(camera);
+    if (!background) return std::nullopt;
+    // The centre's pixel as Camera::ray() places it (y down from the top), the scene's radius
+    // in pixels, and two pixels more: a triangle's edge rasterises into the pixels it touches,
+    // and MSAA's samples sit within them.
+    const double w = camera.width(), h = camera.height();
+    const double cx = 0.5 * w * (1.0 + camera.shift().x);
+    const double cy = h - 0.5 * h * (1.0 - camera.shift().y);  // GL's rows count up
+    const double r = scene_radius_mm_ / camera.pixel_size() + 2.0;
+    const PixelRect rect{static_cast<int>(std::floor(cx - r)), static_cast<int>(std::floor(cy - r)),
+                         static_cast<int>(std::ceil(cx + r)), static_cast<int>(std::ceil(cy + r))};
+    return SceneCover{clamped(rect, camera.width(), camera.height()), *background};
+}
+
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
                                          const StillFrame& still) {
     using Clock = std::chrono::steady_clock;
@@ -145,14 +171,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);
-    // An orthographic camera sees the environment along one direction only, so its background
-    // is one colour: a clear, not a pass of cube lookups over every pixel (8 ms a frame at
-    // 1024² on llvmpipe, whatever the stone covers).
-    std::optional<glm::vec3> flat = setup_.background_colour;
-    if (!flat && camera.orthographic()) {
-        flat = glm::vec3(setup_.environment->radiance(camera.forward()));
-    }
-    auto ok = background_->draw(camera, *environment_cube_, flat);
+    auto ok = background_->draw(camera, *environment_cube_, flat_background(camera));
     if (!ok) return Error{ok.error()};
     const auto ms_since = [](Clock::time_point t) {
         return std::chrono::duration<double, std::milli>(Clock::now() - t).count();

@@ -14,6 +14,7 @@
 #include "gpu/environment_cube.hpp"
 #include "gpu/frame_setup.hpp"
 #include "gpu/frame_uniforms.hpp"
+#include "gpu/scene_cover.hpp"
 #include "gpu/stone_method.hpp"
 #include "piece/metal_mesh.hpp"
 #include "piece/piece.hpp"
@@ -68,6 +69,11 @@ class FrameRenderer {
     // what the piece's stones see: for measuring a model (stone_models.hpp). A method with
     // models only.
     Result<bool> draw_kind_alone(std::size_t k, const Camera& camera, const StoneModel& model);
+    // What render() draws through `camera` besides its background, when that background is
+    // one colour (FrameSetup::background_colour, or what an orthographic camera sees of the
+    // environment): the rectangle around everything drawn (scene_radius_mm() about the centre)
+    // on the picture. Nullopt where the background shows the environment's changing view.
+    std::optional<SceneCover> cover(const Camera& camera) const;
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
@@ -75,6 +81,8 @@ class FrameRenderer {
   private:
     FrameRenderer() = default;
     Result<bool> update_ring_cube();
+    // The background's one colour through `camera`, where it is one.
+    std::optional<glm::vec3> flat_background(const Camera& camera) const;
 
     FrameSetup setup_;
     std::unique_ptr<BackgroundPass> background_;

@@ -151,10 +151,42 @@ bool HdrPicture::multisampled_frame() const {
     return multisampled_ && still_index_ <= 0;
 }
 
-void HdrPicture::bind() const {
+void HdrPicture::forget_all() {
+    multisampled_damage_.forget();
+    resolved_damage_.forget();
+    mean_damage_.forget();
+    target_damage_.forget();
+    if (glare_) glare_->forget();
+}
+
+namespace {
+
+void scissor(const PixelRect& r) {
+    glScissor(r.x0, r.y0, r.width(), r.height());
+}
+
+std::optional<PixelRect> content_of(const std::optional<SceneCover>& cover) {
+    if (!cover) return std::nullopt;
+    return cover->rect;
+}
+
+}  // namespace
+
+void HdrPicture::bind(const std::optional<SceneCover>& cover) {
+    cover_ = cover;
+    if (!cover || !background_ || *background_ != cover->background) forget_all();
+    background_.reset();
+    if (cover) background_ = cover->background;
+    const PixelRect whole = PixelRect::whole(width_, height_);
+    // A multisampled frame draws into the MSAA buffer, a still frame after the first straight
+    // into the resolved picture.
+    SurfaceDamage& drawn = multisampled_frame() ? multisampled_damage_ : resolved_damage_;
+    const PixelRect region = drawn.rewrite(content_of(cover), whole);
     glBindFramebuffer(GL_FRAMEBUFFER,
                       multisampled_frame() ? multisampled_.get() : resolved_framebuffer_.get());
     glViewport(0, 0, width_, height_);
+    glEnable(GL_SCISSOR_TEST);
+    scissor(region);
 }
 
 Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times) {
@@ -167,10 +199,15 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     };
     if (times != nullptr) glFinish();
     t0 = std::chrono::steady_clock::now();
+    const PixelRect whole = PixelRect::whole(width_, height_);
+    const std::optional<PixelRect> content = content_of(cover_);
+    glEnable(GL_SCISSOR_TEST);  // the blit too is scissored
     if (multisampled_frame()) {
+        const PixelRect r = resolved_damage_.rewrite(content, whole);
+        scissor(r);
         glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.get());
         glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.get());
-        glBlitFramebuffer(0, 0, width_, height_, 0, 0, width_, height_, GL_COLOR_BUFFER_BIT,
+        glBlitFramebuffer(r.x0, r.y0, r.x1, r.y1, r.x0, r.y0, r.x1, r.y1, GL_COLOR_BUFFER_BIT,
                           GL_NEAREST);
     }
     GLuint scene = resolved_.get();
@@ -178,6 +215,7 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         // The running mean: the k-th frame (from 0) has weight 1 / (k + 1).
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
+        scissor(mean_damage_.rewrite(content, whole));
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(still_index_ + 1));
@@ -194,12 +232,21 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     lap(times ? &times->resolve_ms : nullptr);
     const bool glare = glare_ && options_.glare > 0.0;
     if (glare) {
-        auto ran = glare_->run(scene);
-        if (!ran) return ran;
+        auto ran = glare_->run(scene, content);
+        if (!ran) {
+            glDisable(GL_SCISSOR_TEST);
+            return ran;
+        }
     }
     lap(times ? &times->glare_ms : nullptr);
 
     picture.bind();
+    if (picture.framebuffer() != last_target_) target_damage_.forget();
+    last_target_ = picture.framebuffer();
+    std::optional<PixelRect> shown = content;
+    if (content && glare) shown = glare_->reach(*content);
+    target_region_ = target_damage_.rewrite(shown, whole);
+    scissor(target_region_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
     finish_.use();
@@ -216,6 +263,7 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     glBindVertexArray(empty_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glActiveTexture(GL_TEXTURE0);
+    glDisable(GL_SCISSOR_TEST);
     lap(times ? &times->tone_ms : nullptr);
     return gl_check("picture: finish");
 }

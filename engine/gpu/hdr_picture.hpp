@@ -20,6 +20,12 @@
 // wavelengths, one per colour channel (still_frame(), optics/spectrum.hpp: StillSpectrum), so
 // that the mean of a still view's frames is each channel's spectral integral; and they may
 // trace deeper than the moving frames (still_depth).
+//
+// Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass runs
+// only where the picture changes: around what the piece covers in this frame and what it
+// covered the last time each surface was drawn (pixel_rect.hpp, SurfaceDamage), the glare's
+// reach included. Outside, each surface still holds the background as a whole frame left it;
+// a new background colour, a new display transform or another target rewrites them whole.
 
 #include <optional>
 
@@ -29,8 +35,10 @@
 #include "gpu/bloom_pass.hpp"
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
+#include "gpu/pixel_rect.hpp"
 #include "gpu/program.hpp"
 #include "gpu/render_target.hpp"
+#include "gpu/scene_cover.hpp"
 #include "optics/spectrum.hpp"
 #include "render/tone_map.hpp"
 #include "util/result.hpp"
@@ -75,12 +83,22 @@ class HdrPicture {
     bool settled() const;
     // The picture is as good as this view gets: settled, or no averaging at all.
     bool refined() const { return !accumulate_ || settled(); }
-    // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture.
-    void bind() const;
-    // The scene into `picture` (the same size). `times`: measure each pass (stalls the GPU).
+    // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, and
+    // the scissor test on around what changes: `cover` (FrameRenderer::cover()) and what the
+    // framebuffer last held; without a cover, the whole picture.
+    void bind(const std::optional<SceneCover>& cover = std::nullopt);
+    // The scene into `picture` (the same size), rewriting only where it changes (bind()'s
+    // cover); the scissor test is off after it. `times`: measure each pass (stalls the GPU).
     Result<bool> finish(const RenderTarget& picture, FinishTimes* times = nullptr);
+    // The target's pixels the last finish() wrote: what a display must show anew.
+    const PixelRect& target_region() const { return target_region_; }
+    // The target was drawn over outside finish() (a cross-fade): the next one rewrites it whole.
+    void forget_target() { target_damage_.forget(); }
 
-    void set_display(const DisplayTransform& display) { options_.display = display; }
+    void set_display(const DisplayTransform& display) {
+        options_.display = display;
+        target_damage_.forget();
+    }
     const PictureOptions& options() const { return options_; }
     int samples() const { return samples_; }
     bool high_range() const { return high_range_; }
@@ -100,6 +118,8 @@ class HdrPicture {
     // reference without MSAA, 0.93 with it (1.57 and 1.94 with spectral fire), and each frame
     // costs less (bench_still_picture --msaa).
     bool multisampled_frame() const;
+    // Every surface rewritten whole at its next frame.
+    void forget_all();
 
     PictureOptions options_;
     int width_ = 0;
@@ -125,6 +145,15 @@ class HdrPicture {
     std::optional<BloomPass> glare_;
     Program finish_;
     VertexArray empty_;
+    // Where each surface differs from the background (bind()'s cover), and this frame's cover.
+    std::optional<SceneCover> cover_;
+    std::optional<glm::vec3> background_;
+    SurfaceDamage multisampled_damage_;
+    SurfaceDamage resolved_damage_;
+    SurfaceDamage mean_damage_;
+    SurfaceDamage target_damage_;
+    GLuint last_target_ = 0;
+    PixelRect target_region_;
 };
 
 }  // namespace gem::gpu

@@ -12,7 +12,7 @@ Result<FrameStats> draw_picture_frame(FrameRenderer& renderer, HdrPicture& pictu
     jittered.shift += picture.jitter_ndc();
     auto moved = Camera::make(jittered, framing_mm, picture.width(), picture.height());
     if (!moved) return Error{moved.error()};
-    picture.bind();
+    picture.bind(renderer.cover(moved.value()));
     auto drawn = renderer.render(moved.value(), wait, picture.still_frame());
     if (!drawn) return drawn;
     auto finished = picture.finish(target);

@@ -1,10 +1,11 @@
 #pragma once
 // The kiosk's frame, composed in one place: KioskSession draws every frame it shows through
 // draw_kiosk_frame, and the method probe (method_probe_run.hpp) times the same function, so the
-// probe measures the frame that is shown. In order: the scene picture bound and cleared to the
-// kiosk's surround; the stone method prepared for the view (the table decodes the views the turn
-// will reach); the scene drawn (background, stones, metal); the picture finished (resolve, the
-// still view's mean, glare, tone) into `target`.
+// probe measures the frame that is shown. In order: the scene picture bound (around what the
+// piece covers, where the surround is one colour) and cleared to the kiosk's surround; the stone
+// method prepared for the view (the table decodes the views the turn will reach); the scene drawn
+// (background, stones, metal); the picture finished (resolve, the still view's mean, glare, tone)
+// into `target`.
 
 #include <optional>
 #include <string>

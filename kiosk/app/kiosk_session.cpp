@@ -478,8 +478,17 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         }
         auto faded = crossfade_->draw(*picture_, now_s);
         if (!faded) return Error{faded.error()};
+        // The fade drew over the whole picture: the next frame finishes it whole.
+        if (fading) scene_picture_->forget_target();
     }
-    auto presented = display_->present(*picture_);
+    // What the picture changed since the last one: nothing when it was not drawn again; all of
+    // it under a cross-fade.
+    gpu::PixelRect changed;
+    if (redraw) {
+        changed = fading ? gpu::PixelRect::whole(picture_->width(), picture_->height())
+                         : scene_picture_->target_region();
+    }
+    auto presented = display_->present(*picture_, changed);
     if (!presented) return Error{"display: " + presented.error()};
     if (!presented.value()) return std::optional<FrameRecord>{};  // drawn, but not shown
     const double done_s = monotonic_now_s();

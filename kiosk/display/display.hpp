@@ -10,6 +10,7 @@
 #include <glm/vec2.hpp>
 
 #include "gpu/egl_context.hpp"
+#include "gpu/pixel_rect.hpp"
 #include "gpu/render_target.hpp"
 #include "util/result.hpp"
 
@@ -34,8 +35,10 @@ class Display {
     // Shows the picture: true when it was handed to the screen, false when it could not be (a
     // failed modeset, no output), which the caller must not count as a frame shown. Errors are
     // for faults that end the display (the caller logs them); a lost flip or a lost output is
-    // handled inside and shows up as ready() staying false.
-    virtual Result<bool> present(const gpu::RenderTarget& picture) = 0;
+    // handled inside and shows up as ready() staying false. `changed`: the picture's pixels
+    // that differ from the last picture presented (y up); the display may draw only those.
+    virtual Result<bool> present(const gpu::RenderTarget& picture,
+                                 const gpu::PixelRect& changed) = 0;
 
     // A file descriptor to poll for input (page-flip events, hotplug, frame timer); -1: none.
     virtual int event_fd() const = 0;

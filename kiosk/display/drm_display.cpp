@@ -194,7 +194,9 @@ bool DrmDisplay::showing() const {
     return seat_->active() && connected_;
 }
 
-Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
+Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture, const gpu::PixelRect& changed) {
+    // A picture not shown leaves its change for the next one to show.
+    unshown_change_ = gpu::united(unshown_change_, changed);
     if (!ready()) return false;
     const glm::ivec2 scanout(output_.mode.hdisplay, output_.mode.vdisplay);
     if (glm::ivec2(picture.width(), picture.height()) != picture_size()) {
@@ -203,7 +205,17 @@ Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture) {
                      std::to_string(picture_size().x) + "x" + std::to_string(picture_size().y)};
     }
     glBindFramebuffer(GL_FRAMEBUFFER, 0);
-    auto drawn = present_->draw(picture, rotation_deg_, scanout);
+    // Only what this back buffer lacks (buffer_damage.hpp); all of it where EGL cannot say.
+    const std::optional<int> age = context_->buffer_age();
+    if (!age && !buffer_age_logged_) {
+        log_info("display: no EGL_EXT_buffer_age: every frame draws the whole screen");
+        buffer_age_logged_ = true;
+    }
+    const gpu::PixelRect region = buffer_damage_.repaint(
+        age, unshown_change_, gpu::PixelRect::whole(picture.width(), picture.height()));
+    unshown_change_ = {};
+    auto drawn = present_->draw(picture, rotation_deg_, scanout,
+                                scanout_rect(region, rotation_deg_, picture_size()));
     if (!drawn) return Error{drawn.error()};
     auto swapped = context_->swap_buffers();
     if (!swapped) return Error{"DRM display: " + swapped.error()};

@@ -14,6 +14,7 @@
 
 #include <xf86drmMode.h>
 
+#include "display/buffer_damage.hpp"
 #include "display/display.hpp"
 #include "display/display_options.hpp"
 #include "display/drm_commit.hpp"
@@ -44,7 +45,7 @@ class DrmDisplay final : public Display {
     gpu::EglContext& context() override { return *context_; }
     bool ready() const override;
     bool showing() const override;
-    Result<bool> present(const gpu::RenderTarget& picture) override;
+    Result<bool> present(const gpu::RenderTarget& picture, const gpu::PixelRect& changed) override;
     int event_fd() const override { return epoll_fd_; }
     void dispatch() override;
     int timeout_ms() const override;
@@ -78,6 +79,9 @@ class DrmDisplay final : public Display {
     gbm_surface* surface_ = nullptr;
     std::optional<gpu::EglContext> context_;
     std::optional<PresentPass> present_;
+    BufferDamage buffer_damage_;
+    gpu::PixelRect unshown_change_;  // changes of pictures not yet drawn into a buffer
+    bool buffer_age_logged_ = false;
     std::unique_ptr<KmsCommit> commit_;
     int rotation_deg_ = 0;
     int flip_timeout_ms_ = 250;

@@ -61,7 +61,9 @@ HeadlessDisplay::~HeadlessDisplay() {
     if (timer_fd_ >= 0) close(timer_fd_);
 }
 
-Result<bool> HeadlessDisplay::present(const gpu::RenderTarget& picture) {
+Result<bool> HeadlessDisplay::present(const gpu::RenderTarget& picture,
+                                      const gpu::PixelRect& changed) {
+    (void)changed;  // the picture itself is what a headless display shows
     if (picture.width() != size_.x || picture.height() != size_.y) {
         return Error{"headless display: picture is " + std::to_string(picture.width()) + "x" +
                      std::to_string(picture.height()) + ", the display " + std::to_string(size_.x) +

@@ -18,7 +18,8 @@ Result<PresentPass> PresentPass::make() {
 }
 
 Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_deg,
-                               glm::ivec2 scanout) const {
+                               glm::ivec2 scanout,
+                               const std::optional<gpu::PixelRect>& region) const {
     const glm::ivec2 picture_size(picture.width(), picture.height());
     assert(picture_size_for(scanout, rotation_deg) == picture_size);
     const PictureFromScanout map = picture_from_scanout(rotation_deg, picture_size);
@@ -32,7 +33,12 @@ Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_de
     program_.set("u_from_scanout", map.linear);
     program_.set("u_from_scanout_offset", map.offset);
     glBindVertexArray(empty_.get());
+    if (region) {
+        glEnable(GL_SCISSOR_TEST);
+        glScissor(region->x0, region->y0, region->width(), region->height());
+    }
     glDrawArrays(GL_TRIANGLES, 0, 3);
+    glDisable(GL_SCISSOR_TEST);
     return gpu::gl_check("present pass");
 }
 

@@ -1,6 +1,8 @@
 #include "display/rotation.hpp"
 
+#include <algorithm>
 #include <cassert>
+#include <cmath>
 
 namespace gem::kiosk {
 
@@ -57,6 +59,22 @@ PictureFromScanout picture_from_scanout(int rotation_deg, glm::ivec2 picture_siz
             break;
     }
     return map;
+}
+
+gpu::PixelRect scanout_rect(const gpu::PixelRect& picture_rect, int rotation_deg,
+                            glm::ivec2 picture_size) {
+    if (picture_rect.empty()) return {};
+    // The map is a quarter turn and a whole-pixel offset, so it takes the rectangle's corners
+    // (not only pixel centres) to corners: scanout = linearᵀ (picture − offset).
+    const PictureFromScanout map = picture_from_scanout(rotation_deg, picture_size);
+    const glm::mat2 back = glm::transpose(map.linear);
+    const glm::vec2 a = back * (glm::vec2(picture_rect.x0, picture_rect.y0) - map.offset);
+    const glm::vec2 b = back * (glm::vec2(picture_rect.x1, picture_rect.y1) - map.offset);
+    const auto side = [](float p, float q) {
+        return static_cast<int>(std::lround(std::min(p, q)));
+    };
+    const auto far = [](float p, float q) { return static_cast<int>(std::lround(std::max(p, q))); };
+    return {side(a.x, b.x), side(a.y, b.y), far(a.x, b.x), far(a.y, b.y)};
 }
 
 }  // namespace gem::kiosk

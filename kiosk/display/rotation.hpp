@@ -8,6 +8,7 @@
 #include <glm/vec2.hpp>
 
 #include "display/drm_select.hpp"
+#include "gpu/pixel_rect.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -32,5 +33,9 @@ struct PictureFromScanout {
     glm::vec2 offset{0.0f};
 };
 PictureFromScanout picture_from_scanout(int rotation_deg, glm::ivec2 picture_size);
+
+// The scanout's pixels that show the picture's pixels in `picture_rect` (both y up).
+gpu::PixelRect scanout_rect(const gpu::PixelRect& picture_rect, int rotation_deg,
+                            glm::ivec2 picture_size);
 
 }  // namespace gem::kiosk

@@ -101,7 +101,9 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         auto cs = gem::kiosk::framed_camera(view, framing);
         cs.shift += hdr.jitter_ndc();
         const auto camera = must(gem::Camera::make(cs, renderer.scene_radius_mm(), w, h));
-        hdr.bind();
+        // Around the piece (the studio's background is one colour all round the turn), as
+        // the kiosk draws it.
+        hdr.bind(renderer.cover(camera));
         glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
         glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
         const gem::gpu::FrameStats drawn =

@@ -72,5 +72,27 @@ TEST(Rotation, CornersLandWherePaperTurnsThem) {
     }
 }
 
+// The scanout rectangle of a picture rectangle, against every scanout pixel's own lookup
+// (picture_from_scanout, as the present pass samples): a scanout pixel is in the rectangle
+// exactly when the picture pixel it shows is.
+TEST(Rotation, AScanoutRectangleHoldsExactlyThePixelsShowingThePictureRectangle) {
+    const glm::ivec2 picture(7, 5);
+    const gpu::PixelRect rect{1, 2, 4, 5};
+    for (int rotation : {0, 90, 180, 270}) {
+        const glm::ivec2 scanout = picture_size_for(picture, rotation);
+        const PictureFromScanout map = picture_from_scanout(rotation, picture);
+        const gpu::PixelRect got = scanout_rect(rect, rotation, picture);
+        for (int y = 0; y < scanout.y; ++y) {
+            for (int x = 0; x < scanout.x; ++x) {
+                const glm::vec2 p = map.linear * glm::vec2(x + 0.5f, y + 0.5f) + map.offset;
+                const bool shows = p.x > rect.x0 && p.x < rect.x1 && p.y > rect.y0 && p.y < rect.y1;
+                const bool inside = x >= got.x0 && x < got.x1 && y >= got.y0 && y < got.y1;
+                EXPECT_EQ(shows, inside) << rotation << "°, scanout pixel " << x << ", " << y;
+            }
+        }
+    }
+    EXPECT_TRUE(scanout_rect({}, 90, picture).empty());
+}
+
 }  // namespace
 }  // namespace gem::kiosk

@@ -142,5 +142,33 @@ TEST(PresentPass, EveryByteValueRoundTrips) {
     RecordProperty("worst_byte_error", worst);
 }
 
+// A region given: the pixels inside it show the new picture, the others keep what the window
+// held (a back buffer that lacks only that part).
+TEST(PresentPass, ARegionDrawsOnlyItsOwnPixels) {
+    auto context = gpu::EglContext::headless();
+    ASSERT_TRUE(context) << context.error();
+    auto pass = PresentPass::make();
+    ASSERT_TRUE(pass) << pass.error();
+    auto picture = gpu::RenderTarget::make(8, 6);
+    ASSERT_TRUE(picture) << picture.error();
+    WindowStandIn window(8, 6);
+    fill_picture(picture.value(), [](int, int) { return Rgb{10, 20, 30}; });
+    ASSERT_TRUE(pass.value().draw(picture.value(), 0, {8, 6}));
+    fill_picture(picture.value(), [](int, int) { return Rgb{200, 100, 50}; });
+    const gpu::PixelRect region{2, 1, 5, 4};  // y up
+    ASSERT_TRUE(pass.value().draw(picture.value(), 0, {8, 6}, region));
+    const auto bytes = window.read();
+    for (int y = 0; y < 6; ++y) {
+        for (int x = 0; x < 8; ++x) {
+            const int y_up = 5 - y;
+            const bool inside = x >= 2 && x < 5 && y_up >= 1 && y_up < 4;
+            EXPECT_NEAR(window.at(bytes, x, y)[0], inside ? 200 : 10, 1) << x << ", " << y;
+        }
+    }
+    GLboolean scissor = GL_TRUE;
+    glGetBooleanv(GL_SCISSOR_TEST, &scissor);
+    EXPECT_EQ(scissor, GL_FALSE) << "the pass leaves the scissor test off";
+}
+
 }  // namespace
 }  // namespace gem::kiosk

@@ -1,0 +1,86 @@
+#pragma once
+// Rectangles of pixels in a framebuffer's own coordinates (GL's: x right, y up from the
+// bottom row), for drawing only where a picture changed: the passes after the scene run under
+// a scissor around what the piece covers (hdr_picture.hpp), and the kiosk repaints a back
+// buffer only where it is stale (EGL_EXT_buffer_age).
+
+#include <algorithm>
+#include <cmath>
+#include <optional>
+
+#include <glm/vec2.hpp>
+
+namespace gem::gpu {
+
+// [x0, x1) × [y0, y1); empty when either side is not positive.
+struct PixelRect {
+    int x0 = 0, y0 = 0, x1 = 0, y1 = 0;
+
+    static PixelRect whole(int width, int height) { return {0, 0, width, height}; }
+    int width() const { return std::max(x1 - x0, 0); }
+    int height() const { return std::max(y1 - y0, 0); }
+    bool empty() const { return width() == 0 || height() == 0; }
+    long area() const { return static_cast<long>(width()) * height(); }
+    bool operator==(const PixelRect&) const = default;
+};
+
+// The smallest rectangle holding both (an empty one adds nothing).
+inline PixelRect united(const PixelRect& a, const PixelRect& b) {
+    if (a.empty()) return b;
+    if (b.empty()) return a;
+    return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
+}
+
+inline PixelRect clamped(const PixelRect& r, int width, int height) {
+    PixelRect c{std::clamp(r.x0, 0, width), std::clamp(r.y0, 0, height), std::clamp(r.x1, 0, width),
+                std::clamp(r.y1, 0, height)};
+    return c.empty() ? PixelRect{} : c;
+}
+
+// One side of affected_by(): the output texels [lo, hi) whose taps reach input texels [a, b).
+// An output texel j samples the input at x = (j + 0.5) · scale + o, o in [reach_lo, reach_hi]
+// (in input texels), with bilinear filtering, so it reads the input texels from
+// floor(x_lo − 0.5) to floor(x_hi + 0.5). It is affected when that range meets [a, b):
+// (j + 0.5) · scale + reach_hi + 0.5 ≥ a and (j + 0.5) · scale + reach_lo − 0.5 < b. One texel
+// more on each side keeps float rounding in the shaders' own coordinates on the safe side.
+inline void affected_side(int a, int b, double scale, double reach_lo, double reach_hi, int size,
+                          int& lo, int& hi) {
+    lo = static_cast<int>(std::ceil((a - reach_hi - 0.5) / scale - 0.5)) - 1;
+    hi = static_cast<int>(std::ceil((b - reach_lo + 0.5) / scale - 0.5)) + 1;
+    lo = std::clamp(lo, 0, size);
+    hi = std::clamp(hi, 0, size);
+}
+
+// The texels of an output of `size` that read anything in `input` (in input texels), for a
+// pass sampling at `scale` input texels per output texel with taps from `reach_lo` to
+// `reach_hi` input texels about the centre, bilinear.
+inline PixelRect affected_by(const PixelRect& input, glm::dvec2 scale, double reach_lo,
+                             double reach_hi, glm::ivec2 size) {
+    if (input.empty()) return {};
+    PixelRect out;
+    affected_side(input.x0, input.x1, scale.x, reach_lo, reach_hi, size.x, out.x0, out.x1);
+    affected_side(input.y0, input.y1, scale.y, reach_lo, reach_hi, size.y, out.y0, out.y1);
+    return out.empty() ? PixelRect{} : out;
+}
+
+// What a surface holds apart from the flat background it was cleared to, so that a frame
+// rewrites only the part that changes: the content it draws now and the content it drew last
+// (which must go). A surface whose last content is unknown (never drawn, drawn over by
+// something else, its background changed) is rewritten whole.
+class SurfaceDamage {
+  public:
+    // The region to rewrite for content `now` (nullopt: the whole surface changes, as with a
+    // background that is not one colour); remembers `now` as the surface's content.
+    PixelRect rewrite(const std::optional<PixelRect>& now, const PixelRect& whole) {
+        const PixelRect region = now && last_ ? united(*now, *last_) : whole;
+        last_ = now;
+        return region;
+    }
+    // The surface was drawn outside this bookkeeping: the next frame rewrites it whole.
+    void forget() { last_.reset(); }
+
+  private:
+    std::optional<PixelRect> last_;
+};
+
+}  // namespace gem::gpu
