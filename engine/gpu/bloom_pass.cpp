@@ -27,8 +27,8 @@ Result<BloomPass> BloomPass::make(int width, int height) {
         Level level;
         level.width = w;
         level.height = h;
-        level.texture = make_texture_2d(GL_RGBA16F, w, h, GL_LINEAR);
-        level.framebuffer = make_framebuffer_with(level.texture.get());
+        level.down = make_texture_2d(GL_RGBA16F, w, h, GL_LINEAR);
+        level.down_framebuffer = make_framebuffer_with(level.down.get());
         if (glCheckFramebufferStatus(GL_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
             return Error{"glare: the GPU cannot render to RGBA16F"};
         }
@@ -37,45 +37,51 @@ Result<BloomPass> BloomPass::make(int width, int height) {
         h /= 2;
     }
     if (b.levels_.empty()) return Error{"glare: the picture is too small for a glare pyramid"};
+    for (std::size_t i = 0; i + 1 < b.levels_.size(); ++i) {
+        Level& level = b.levels_[i];
+        level.sum = make_texture_2d(GL_RGBA16F, level.width, level.height, GL_LINEAR);
+        level.sum_framebuffer = make_framebuffer_with(level.sum.get());
+    }
     auto ok = gl_check("glare: allocate");
     if (!ok) return Error{ok.error()};
     return b;
 }
 
-BloomPass::LevelRegions BloomPass::level_regions(const PixelRect& region) const {
-    LevelRegions out;
+GLuint BloomPass::glare_texture() const {
+    return sum_texture(0);
+}
+
+void BloomPass::level_regions(const PixelRect& region, LevelRegions& down,
+                              LevelRegions& sum) const {
     // Down (shaders/bloom_down.frag): texel j of a level samples its source at (j + 0.5) · 2
     // source texels, taps ±2 texels about it, bilinear.
     PixelRect source = region;
     for (std::size_t i = 0; i < levels_.size(); ++i) {
-        out[i] = affected_by(source, glm::dvec2(2.0), -2.0, 2.0, size_of(i));
-        source = out[i];
+        down[i] = affected_by(source, glm::dvec2(2.0), -2.0, 2.0, size_of(i));
+        source = down[i];
     }
-    // Up (shaders/bloom_up.frag): texel j samples the smaller level at (j + 0.5) · its size /
-    // this level's size, taps ±1 of its texels, bilinear.
+    // Up (shaders/bloom_up.frag): texel j samples the smaller level's sum at (j + 0.5) · its
+    // size / this level's size, taps ±1 of its texels, bilinear; and its own downsample.
+    sum[levels_.size() - 1] = down[levels_.size() - 1];
     for (std::size_t i = levels_.size() - 1; i-- > 0;) {
         const glm::dvec2 scale = glm::dvec2(size_of(i + 1)) / glm::dvec2(size_of(i));
-        out[i] = united(out[i], affected_by(out[i + 1], scale, -1.0, 1.0, size_of(i)));
+        sum[i] = united(down[i], affected_by(sum[i + 1], scale, -1.0, 1.0, size_of(i)));
     }
-    return out;
 }
 
 PixelRect BloomPass::reach(const PixelRect& content) const {
-    const LevelRegions regions = level_regions(content);
+    LevelRegions down, sum;
+    level_regions(content, down, sum);
     // shaders/finish.frag samples the top level at the pixel's centre, bilinear.
     const glm::dvec2 scale = glm::dvec2(size_of(0)) / glm::dvec2(width_, height_);
-    return united(content, affected_by(regions[0], scale, 0.0, 0.0, {width_, height_}));
+    return united(content, affected_by(sum[0], scale, 0.0, 0.0, {width_, height_}));
 }
 
 Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& content) {
-    const PixelRect whole = PixelRect::whole(width_, height_);
-    const PixelRect region = damage_.rewrite(content, whole);
-    // The whole picture reaches every level whole.
-    const LevelRegions regions = level_regions(region);
-    const auto scissor = [&](std::size_t i) {
-        const PixelRect& r = regions[i];
-        glScissor(r.x0, r.y0, r.width(), r.height());
-    };
+    // Without a content (or a last one) the region is the whole picture: every level whole.
+    LevelRegions down, sum;
+    level_regions(damage_.rewrite(content, PixelRect::whole(width_, height_)), down, sum);
+    const auto scissor = [](const PixelRect& r) { glScissor(r.x0, r.y0, r.width(), r.height()); };
     glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -87,35 +93,36 @@ Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& conten
     glm::vec2 source_texel(1.0f / static_cast<float>(width_), 1.0f / static_cast<float>(height_));
     for (std::size_t i = 0; i < levels_.size(); ++i) {
         const Level& level = levels_[i];
-        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
+        glBindFramebuffer(GL_FRAMEBUFFER, level.down_framebuffer.get());
         glViewport(0, 0, level.width, level.height);
-        scissor(i);
+        scissor(down[i]);
         glBindTexture(GL_TEXTURE_2D, source);
         down_.set("u_source_texel", source_texel);
         down_.set("u_karis", i == 0 ? 1 : 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        source = level.texture.get();
+        source = level.down.get();
         source_texel = glm::vec2(1.0f / static_cast<float>(level.width),
                                  1.0f / static_cast<float>(level.height));
     }
     up_.use();
     up_.set("u_source", 0);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_ONE, GL_ONE);
+    up_.set("u_own", 1);
     for (std::size_t i = levels_.size() - 1; i-- > 0;) {
         const Level& smaller = levels_[i + 1];
         const Level& level = levels_[i];
-        glBindFramebuffer(GL_FRAMEBUFFER, level.framebuffer.get());
+        glBindFramebuffer(GL_FRAMEBUFFER, level.sum_framebuffer.get());
         glViewport(0, 0, level.width, level.height);
-        scissor(i);
-        glBindTexture(GL_TEXTURE_2D, smaller.texture.get());
+        scissor(sum[i]);
+        glActiveTexture(GL_TEXTURE1);
+        glBindTexture(GL_TEXTURE_2D, level.down.get());
+        glActiveTexture(GL_TEXTURE0);
+        glBindTexture(GL_TEXTURE_2D, sum_texture(i + 1));
         up_.set("u_source_texel", glm::vec2(1.0f / static_cast<float>(smaller.width),
                                             1.0f / static_cast<float>(smaller.height)));
         up_.set("u_target_texel", glm::vec2(1.0f / static_cast<float>(level.width),
                                             1.0f / static_cast<float>(level.height)));
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    glDisable(GL_BLEND);
     return gl_check("glare pass");
 }
 

@@ -3,6 +3,11 @@
 // shaders/bloom_down.frag), filtered down from the HDR picture and added back up. The top
 // level then holds the sum of `levels()` ever wider blurs of the picture, each with the
 // picture's energy; shaders/finish.frag mixes their mean in.
+//
+// Each level keeps its downsample and its sum apart (the sum is the downsample plus the wider
+// level's sum, upsampled: shaders/bloom_up.frag), so that where a piece on a flat background
+// changes only part of the picture, a level's downsample is redrawn only where the piece
+// reaches it, and its sum only where the sums below reach it (SurfaceDamage, pixel_rect.hpp).
 
 #include <array>
 #include <optional>
@@ -24,7 +29,7 @@ class BloomPass {
     // Filters `scene` (an RGBA16F texture of the picture's size) into the pyramid. `content`:
     // where the scene differs from one flat colour, which it was everywhere else the last time
     // too (nullopt: anywhere); each level is then rewritten only where this content or the
-    // last run's reaches it (SurfaceDamage). Leaves the scissor test on.
+    // last run's reaches it. Leaves the scissor test on.
     Result<bool> run(GLuint scene, const std::optional<PixelRect>& content = std::nullopt);
     // The picture's pixels whose glare reads anything from the scene's pixels in `content`,
     // those included: where the glare of a piece on a flat background differs from the
@@ -33,13 +38,16 @@ class BloomPass {
     // The last run's content is unknown to the next (the pyramid was filled from another
     // background): it is rewritten whole.
     void forget() { damage_.forget(); }
-    GLuint glare_texture() const { return levels_.front().texture.get(); }
+    // The top level's sum.
+    GLuint glare_texture() const;
     int levels() const { return static_cast<int>(levels_.size()); }
 
   private:
     struct Level {
-        Texture texture;
-        Framebuffer framebuffer;
+        Texture down;  // the downsample of the level above (of the picture, for the top one)
+        Framebuffer down_framebuffer;
+        Texture sum;  // down + the next level's sum, upsampled; the last level has none
+        Framebuffer sum_framebuffer;
         int width = 0;
         int height = 0;
     };
@@ -47,13 +55,14 @@ class BloomPass {
     glm::ivec2 size_of(std::size_t level) const {
         return {levels_[level].width, levels_[level].height};
     }
-    // Each level's texels that read anything of the picture's `region`, through the filters
-    // down and then back up (the up pass adds into what the down pass wrote, so both rewrite
-    // the same texels): a level's region is what its own downsample reaches and what the
-    // upsampled smaller level reaches.
     static constexpr int kMaxLevels = 6;  // at 1080p the widest blur spans a tenth of the height
     using LevelRegions = std::array<PixelRect, kMaxLevels>;
-    LevelRegions level_regions(const PixelRect& region) const;
+    // Each level's texels that read anything of the picture's `region`: through the filters
+    // down (`down`), and then also back up from the smaller levels (`sum`).
+    void level_regions(const PixelRect& region, LevelRegions& down, LevelRegions& sum) const;
+    GLuint sum_texture(std::size_t level) const {
+        return level + 1 == levels_.size() ? levels_[level].down.get() : levels_[level].sum.get();
+    }
 
     Program down_;
     Program up_;

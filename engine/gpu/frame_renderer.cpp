@@ -2,6 +2,7 @@
 
 #include <chrono>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 #include "gpu/gl_check.hpp"
@@ -106,6 +107,18 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (!tabled) return Error{"frame renderer: " + tabled.error()};
         r.method_ = std::move(tabled).value();
     }
+    // The box about everything drawn: each stone's corners where it sits, and the metal.
+    r.box_lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
+    r.box_hi_ = -r.box_lo_;
+    const auto hold = [&r](const glm::dvec3& p) {
+        r.box_lo_ = glm::min(r.box_lo_, p);
+        r.box_hi_ = glm::max(r.box_hi_, p);
+    };
+    for (std::size_t i = 0; i < r.frames_.size(); ++i) {
+        for (const glm::dvec3& v : kinds[r.kinds_[i]]->vertices) {
+            hold(r.frames_[i].placement.to_piece(v));
+        }
+    }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
     const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;
@@ -114,6 +127,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
+        for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
         // The ring sits about as far from the stone as its own radius: that is where the
         // virtual cube's faces stand, so rays leaving off-centre see it with parallax.
         r.cube_half_mm_ = metal->radius_mm();
@@ -151,15 +165,26 @@ std::optional<glm::vec3> FrameRenderer::flat_background(const Camera& camera) co
 std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
     const std::optional<glm::vec3> background = flat_background(camera);
     if (!background) return std::nullopt;
-    // The centre's pixel as Camera::ray() places it (y down from the top), the scene's radius
-    // in pixels, and two pixels more: a triangle's edge rasterises into the pixels it touches,
-    // and MSAA's samples sit within them.
+    // The box's corners on the picture, with the centre where Camera::ray() places it (GL's
+    // rows count up), and two pixels more: a triangle's edge rasterises into the pixels it
+    // touches, and MSAA's samples sit within them.
     const double w = camera.width(), h = camera.height();
-    const double cx = 0.5 * w * (1.0 + camera.shift().x);
-    const double cy = h - 0.5 * h * (1.0 - camera.shift().y);  // GL's rows count up
-    const double r = scene_radius_mm_ / camera.pixel_size() + 2.0;
-    const PixelRect rect{static_cast<int>(std::floor(cx - r)), static_cast<int>(std::floor(cy - r)),
-                         static_cast<int>(std::ceil(cx + r)), static_cast<int>(std::ceil(cy + r))};
+    const glm::dvec2 centre(0.5 * w * (1.0 + camera.shift().x),
+                            h - 0.5 * h * (1.0 - camera.shift().y));
+    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
+    for (int corner = 0; corner < 8; ++corner) {
+        const glm::dvec3 p((corner & 1) ? box_hi_.x : box_lo_.x,
+                           (corner & 2) ? box_hi_.y : box_lo_.y,
+                           (corner & 4) ? box_hi_.z : box_lo_.z);
+        const glm::dvec2 px =
+            centre +
+            glm::dvec2(glm::dot(p, camera.right()), glm::dot(p, camera.up())) / camera.pixel_size();
+        lo = glm::min(lo, px);
+        hi = glm::max(hi, px);
+    }
+    const PixelRect rect{
+        static_cast<int>(std::floor(lo.x)) - 2, static_cast<int>(std::floor(lo.y)) - 2,
+        static_cast<int>(std::ceil(hi.x)) + 2, static_cast<int>(std::ceil(hi.y)) + 2};
     return SceneCover{clamped(rect, camera.width(), camera.height()), *background};
 }
 

@@ -71,8 +71,9 @@ class FrameRenderer {
     Result<bool> draw_kind_alone(std::size_t k, const Camera& camera, const StoneModel& model);
     // What render() draws through `camera` besides its background, when that background is
     // one colour (FrameSetup::background_colour, or what an orthographic camera sees of the
-    // environment): the rectangle around everything drawn (scene_radius_mm() about the centre)
-    // on the picture. Nullopt where the background shows the environment's changing view.
+    // environment): the rectangle around everything drawn (the corners of a box about the
+    // stones and metal) on the picture. Nullopt where the background shows the environment's
+    // changing view.
     std::optional<SceneCover> cover(const Camera& camera) const;
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
@@ -101,6 +102,7 @@ class FrameRenderer {
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
     double cube_half_mm_ = 0.0;
+    glm::dvec3 box_lo_{0.0}, box_hi_{0.0};  // about every stone and the metal (cover())
 };
 
 }  // namespace gem::gpu

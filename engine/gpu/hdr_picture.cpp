@@ -152,7 +152,6 @@ bool HdrPicture::multisampled_frame() const {
 }
 
 void HdrPicture::forget_all() {
-    multisampled_damage_.forget();
     resolved_damage_.forget();
     mean_damage_.forget();
     target_damage_.forget();
@@ -177,16 +176,18 @@ void HdrPicture::bind(const std::optional<SceneCover>& cover) {
     if (!cover || !background_ || *background_ != cover->background) forget_all();
     background_.reset();
     if (cover) background_ = cover->background;
-    const PixelRect whole = PixelRect::whole(width_, height_);
-    // A multisampled frame draws into the MSAA buffer, a still frame after the first straight
-    // into the resolved picture.
-    SurfaceDamage& drawn = multisampled_frame() ? multisampled_damage_ : resolved_damage_;
-    const PixelRect region = drawn.rewrite(content_of(cover), whole);
+    // The scene is drawn whole, cleared first: a clear of the whole framebuffer is the cheap
+    // one (a tiled GPU need not load its tiles; llvmpipe clears tiles without rasterising:
+    // bench_picture measured a scissored clear of the 4× MSAA picture at 1080p 7 ms dearer),
+    // and the scene's own draws cover only their pixels. A still frame after the first draws
+    // straight into the resolved picture, whose content is then this frame's.
+    if (!multisampled_frame()) {
+        resolved_damage_.rewrite(content_of(cover), PixelRect::whole(width_, height_));
+    }
     glBindFramebuffer(GL_FRAMEBUFFER,
                       multisampled_frame() ? multisampled_.get() : resolved_framebuffer_.get());
     glViewport(0, 0, width_, height_);
-    glEnable(GL_SCISSOR_TEST);
-    scissor(region);
+    glDisable(GL_SCISSOR_TEST);
 }
 
 Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times) {

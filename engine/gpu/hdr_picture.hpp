@@ -21,9 +21,9 @@
 // that the mean of a still view's frames is each channel's spectral integral; and they may
 // trace deeper than the moving frames (still_depth).
 //
-// Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass runs
-// only where the picture changes: around what the piece covers in this frame and what it
-// covered the last time each surface was drawn (pixel_rect.hpp, SurfaceDamage), the glare's
+// Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass after
+// the scene runs only where the picture changes: around what the piece covers in this frame and
+// what it covered the last time each surface was drawn (pixel_rect.hpp, SurfaceDamage), the glare's
 // reach included. Outside, each surface still holds the background as a whole frame left it;
 // a new background colour, a new display transform or another target rewrites them whole.
 
@@ -83,9 +83,9 @@ class HdrPicture {
     bool settled() const;
     // The picture is as good as this view gets: settled, or no averaging at all.
     bool refined() const { return !accumulate_ || settled(); }
-    // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, and
-    // the scissor test on around what changes: `cover` (FrameRenderer::cover()) and what the
-    // framebuffer last held; without a cover, the whole picture.
+    // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, for
+    // a frame whose scene covers `cover` (FrameRenderer::cover(); nullopt: anything). The
+    // scene is drawn whole (its clear is cheapest so); finish() runs around the cover.
     void bind(const std::optional<SceneCover>& cover = std::nullopt);
     // The scene into `picture` (the same size), rewriting only where it changes (bind()'s
     // cover); the scissor test is off after it. `times`: measure each pass (stalls the GPU).
@@ -148,7 +148,6 @@ class HdrPicture {
     // Where each surface differs from the background (bind()'s cover), and this frame's cover.
     std::optional<SceneCover> cover_;
     std::optional<glm::vec3> background_;
-    SurfaceDamage multisampled_damage_;
     SurfaceDamage resolved_damage_;
     SurfaceDamage mean_damage_;
     SurfaceDamage target_damage_;

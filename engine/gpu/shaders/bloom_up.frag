@@ -1,7 +1,8 @@
 // One step up the glare's pyramid: a 3×3 tent (1 2 1 / 2 4 2 / 1 2 1, over 16) of the smaller
-// level, added by blending onto this level's own downsampled picture (Jimenez 2014), so each
-// level carries its own blur plus every wider one.
-uniform sampler2D u_source;
+// level's sum, added to this level's own downsampled picture (Jimenez 2014), so each level's
+// sum carries its own blur plus every wider one.
+uniform sampler2D u_source;   // the smaller level's sum
+uniform sampler2D u_own;      // this level's downsample
 uniform vec2 u_source_texel;  // 1 / the smaller level's size
 uniform vec2 u_target_texel;  // 1 / this level's size
 out vec4 o_colour;
@@ -14,5 +15,6 @@ void main() {
                   texture(u_source, uv + vec2(0.0, o.y)).rgb + texture(u_source, uv - vec2(0.0, o.y)).rgb);
     sum += texture(u_source, uv + o).rgb + texture(u_source, uv - o).rgb +
            texture(u_source, uv + vec2(o.x, -o.y)).rgb + texture(u_source, uv + vec2(-o.x, o.y)).rgb;
-    o_colour = vec4(sum / 16.0, 1.0);
+    vec3 own = texelFetch(u_own, ivec2(gl_FragCoord.xy), 0).rgb;
+    o_colour = vec4(own + sum / 16.0, 1.0);
 }
