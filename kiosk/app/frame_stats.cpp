@@ -22,6 +22,10 @@ void FrameStats::add(const FrameRecord& record) {
         ++shown_again_;
         return;
     }
+    if (record.probing) {
+        ++while_probing_;
+        return;
+    }
     frames_.push_back(record);
     if (max_records_ > 0 && frames_.size() > max_records_) frames_.pop_front();
 }
@@ -38,7 +42,11 @@ std::string describe(const char* what, const std::vector<double>& v) {
 }  // namespace
 
 std::string FrameStats::summary() const {
-    if (frames_.empty()) return "no frames";
+    if (frames_.empty()) {
+        return while_probing_ > 0 ? std::to_string(while_probing_) +
+                                        " frames, all drawn while the method probe measured"
+                                  : "no frames";
+    }
     std::vector<double> draw;
     std::vector<double> interval;
     std::vector<double> latency;
@@ -53,8 +61,8 @@ std::string FrameStats::summary() const {
     std::snprintf(head, sizeof head, "%zu frames in %.1f s: %.2f frames/s; ", frames_.size(),
                   span_s, span_s > 0.0 ? static_cast<double>(frames_.size()) / span_s : 0.0);
     std::string s = head;
-    if (static_cast<long>(frames_.size()) < total_ - shown_again_) {
-        s = std::to_string(total_ - shown_again_) + " frames, the last " + s;
+    if (static_cast<long>(frames_.size()) < total_ - shown_again_ - while_probing_) {
+        s = std::to_string(total_ - shown_again_ - while_probing_) + " frames, the last " + s;
     }
     s += describe("draw", draw);
     if (!interval.empty()) s += "; " + describe("interval", interval);
@@ -64,6 +72,9 @@ std::string FrameStats::summary() const {
     }
     if (shown_again_ > 0) {
         s += "; " + std::to_string(shown_again_) + " more shown again undrawn (a settled view)";
+    }
+    if (while_probing_ > 0) {
+        s += "; " + std::to_string(while_probing_) + " more drawn while the method probe measured";
     }
     return s;
 }

@@ -20,6 +20,10 @@ struct FrameRecord {
     // False: the picture on screen shown again undrawn (a settled still view); it counts in
     // total() but not in the drawing figures.
     bool drawn = true;
+    // Drawn while render.method = "auto" measured the methods between the frames shown (with
+    // the safe choice, its frame rate halved): counted in total() and named apart, not in the
+    // drawing figures, which are the chosen method's.
+    bool probing = false;
 };
 
 class FrameStats {
@@ -42,6 +46,7 @@ class FrameStats {
     std::deque<FrameRecord> frames_;
     long total_ = 0;
     long shown_again_ = 0;
+    long while_probing_ = 0;
 };
 
 // The p-quantile (0..1) of `values` by the nearest-rank method; 0 for an empty list.

@@ -329,11 +329,10 @@ void KioskSession::rebuild_scene(double now_s) {
 }
 
 void KioskSession::choose_render_method() {
-    // Once per session, before the first frame: a catalogue switch or a new stone keeps the
-    // choice, since the cost is set by the picture's pixels and the stone's share of them (the
-    // start view frames every ring the same way), and a probe is a pause of seconds. A display
-    // reopened at another size keeps it too: once frames are on screen the systemd watchdog
-    // (10 s) would not survive a probe on a slow GPU.
+    // Once per session, as the first stone is shown: a catalogue switch or a new stone keeps
+    // the choice, since the cost is set by the picture's pixels and the stone's share of them
+    // (the start view frames every ring the same way), and a probe halves the frame rate for a
+    // few seconds. A display reopened at another size keeps it too.
     const glm::ivec2 size = display_->picture_size();
     if (probed_size_ == size) return;
     if (probed_size_ && first_frame_shown_) {
@@ -356,19 +355,73 @@ void KioskSession::choose_render_method() {
     }
     // Marked before probing: a probe that fails is not tried again once frames are on screen.
     probed_size_ = size;
-    auto probe = probe_methods(selection_->stone(), selection_->look(), render_, *scene_picture_,
-                               *picture_, kStartView, budget_ms);
+    probe_budget_ms_ = budget_ms;
+    probe_with_extras_.reset();
+    auto probe = MethodProbe::start(selection_->stone(), selection_->look(), render_,
+                                    scene_picture_->options(), size, kStartView, budget_ms);
     if (!probe) {
         log_error("render.method auto: no probe (" + probe.error() + "); using table");
         return;
     }
-    ProbeResult& r = probe.value();
-    if (!r.choice.fits) shed_picture_extras(r, budget_ms);
+    probe_ = std::move(probe).value();
+    log_info("render.method auto: measuring the methods while the stone is shown with the table");
+}
+
+void KioskSession::advance_probe(double now_s) {
+    if (!probe_ || !probe_->step()) return;
+    apply_probe(now_s);
+}
+
+void KioskSession::apply_probe(double now_s) {
+    ProbeResult r = probe_->result();
+    probe_.reset();
+    const auto chosen_ms = [](const ProbeResult& p) {
+        const auto& statistic = p.choice.statistic_ms[p.choice.index];
+        return statistic ? *statistic : std::nan("");
+    };
+    const bool extras =
+        r.picture.samples > 1 || (r.picture.glare > 0.0 && scene_picture_->high_range());
+    if (r.choice.valid && !r.choice.fits && extras && !probe_with_extras_) {
+        // Probed again without MSAA and glare, still between frames shown.
+        gpu::PictureOptions without = r.picture;
+        without.samples = 1;
+        without.glare = 0.0;
+        auto again = MethodProbe::start(selection_->stone(), selection_->look(), render_, without,
+                                        display_->picture_size(), kStartView, probe_budget_ms_);
+        if (again) {
+            probe_with_extras_ = std::move(r);
+            probe_ = std::move(again).value();
+            return;
+        }
+        log_error("render.method auto: no probe without MSAA and glare (" + again.error() + ")");
+    }
+    if (probe_with_extras_ && r.choice.valid) {
+        char line[240];
+        std::snprintf(line, sizeof line,
+                      "picture: MSAA and glare off: no method held the %.1f ms budget with them "
+                      "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
+                      "averaged over %d frames",
+                      probe_budget_ms_, chosen_name(*probe_with_extras_).c_str(),
+                      chosen_ms(*probe_with_extras_), chosen_name(r).c_str(), chosen_ms(r),
+                      r.picture.still_frames);
+        log_warning(line);
+        auto remade = gpu::HdrPicture::make(picture_->width(), picture_->height(), r.picture);
+        if (remade) {
+            scene_picture_.emplace(std::move(remade).value());
+            scene_picture_->set_display(display_transform(config_.picture, selection_->look()));
+        } else {
+            log_error("picture: " + remade.error());
+        }
+    } else if (probe_with_extras_) {
+        r = std::move(*probe_with_extras_);  // without the extras nothing drew: keep them
+    }
+    probe_with_extras_.reset();
     if (!r.choice.valid) {
         log_error("render.method auto: no candidate drew a frame; using table");
         return;
     }
     render_ = apply_candidate(render_, r.candidates[r.choice.index]);
+    const glm::ivec2 size = display_->picture_size();
     char cost[96];
     std::snprintf(cost, sizeof cost, " (%dx%d, probe took %.2f s)", size.x, size.y, r.seconds);
     const std::string line = describe_choice(r.candidates, r.choice) + cost;
@@ -382,40 +435,16 @@ void KioskSession::choose_render_method() {
                       kNearFastest);
         log_warning(line + why);
     }
+    // The stone drawn again with the choice, faded in over the table's picture.
+    if (picture_ && crossfade_ && first_frame_shown_) {
+        crossfade_->hold(*picture_, now_s, config_.crossfade_s);
+    }
+    scene_stale_ = true;
 }
 
 bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
     return a.azimuth_deg == b.azimuth_deg && a.elevation_deg == b.elevation_deg &&
            a.roll_deg == b.roll_deg && a.zoom == b.zoom;
-}
-
-void KioskSession::shed_picture_extras(ProbeResult& probe, double budget_ms) {
-    gpu::PictureOptions options = scene_picture_->options();
-    const bool glare = options.glare > 0.0 && scene_picture_->high_range();
-    if (scene_picture_->samples() <= 1 && !glare) return;
-    const auto chosen_ms = [](const ProbeResult& r) {
-        const auto& statistic = r.choice.statistic_ms[r.choice.index];
-        return statistic ? *statistic : std::nan("");
-    };
-    const std::string chosen_with = chosen_name(probe);
-    const double with_ms = chosen_ms(probe);
-    options.samples = 1;
-    options.glare = 0.0;
-    auto remade = gpu::HdrPicture::make(picture_->width(), picture_->height(), options);
-    if (!remade) return;
-    scene_picture_.emplace(std::move(remade).value());
-    auto again = probe_methods(selection_->stone(), selection_->look(), render_, *scene_picture_,
-                               *picture_, kStartView, budget_ms);
-    if (!again || !again.value().choice.valid) return;
-    char line[240];
-    std::snprintf(line, sizeof line,
-                  "picture: MSAA and glare off: no method held the %.1f ms budget with them "
-                  "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
-                  "averaged over %d frames",
-                  budget_ms, chosen_with.c_str(), with_ms, chosen_name(again.value()).c_str(),
-                  chosen_ms(again.value()), options.still_frames);
-    log_warning(line);
-    probe = std::move(again).value();
 }
 
 std::string KioskSession::chosen_name(const ProbeResult& probe) {
@@ -460,6 +489,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
 
     FrameRecord record;
     record.start_s = monotonic_now_s();
+    record.probing = probe_ != nullptr;
     last_frame_start_s_ = record.start_s;
     if (redraw) {
         glm::dvec3 omega(0.0);
@@ -498,6 +528,8 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         last_present_s_ = done_s;
         notifier_.frame_presented(done_s);
         write_requested_snapshot();
+        advance_probe(done_s);
+        start_replay(done_s);
         record.drawn = false;
         return std::optional<FrameRecord>(record);
     }
@@ -527,10 +559,8 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
                       seconds_since_process_start());
         log_info(line);
         notifier_.ready("showing " + selection_->describe());
-        // A replay starts once the kiosk is on screen, so start-up never eats its first
-        // gestures.
-        if (replay_) replay_->start(done_s);
     }
+    start_replay(done_s);
     const int every = config_.snapshot.every_n_frames;
     if (every > 0 && frame_number_ % every == 0) {
         char name[32];
@@ -538,7 +568,16 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         write_snapshot_file(name);
     }
     write_requested_snapshot();
+    advance_probe(done_s);
     return std::optional<FrameRecord>(record);
+}
+
+void KioskSession::start_replay(double now_s) {
+    // A replay starts once the kiosk is on screen with its chosen method, so neither start-up
+    // nor the method probe eats its first gestures, and its frames are the chosen method's.
+    if (!replay_ || replay_started_ || !first_frame_shown_ || probe_ || scene_stale_) return;
+    replay_->start(now_s);
+    replay_started_ = true;
 }
 
 void KioskSession::write_requested_snapshot() {
@@ -567,8 +606,9 @@ bool KioskSession::replay_settled(double now_s) const {
     const double rest_s = 8.0 * config_.gestures.inertia_half_life_s;
     // ... and the still view has all its averaged frames, so the last picture is the settled
     // one whatever the machine's speed.
+    // ... and render.method auto has made its choice and shows it.
     return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s &&
-           scene_picture_ && scene_picture_->refined();
+           scene_picture_ && scene_picture_->refined() && !probe_ && !scene_stale_;
 }
 
 void KioskSession::finish() {
@@ -582,6 +622,7 @@ void KioskSession::finish() {
     if (run_.snapshot_last && picture_) write_snapshot_file("last.png");
     // GL objects go while their context is current, then the display (which restores the mode
     // the screen had before the kiosk).
+    probe_.reset();
     scene_.reset();
     crossfade_.reset();
     picture_.reset();

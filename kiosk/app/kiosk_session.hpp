@@ -63,16 +63,21 @@ class KioskSession {
     Result<bool> make_gpu_objects();
     void switch_catalogue(Catalogue catalogue, double now_s);
     void rebuild_scene(double now_s);
-    // render.method = auto: measures the candidates and sets render_ (method_probe.hpp).
+    // render.method = auto: starts measuring the candidates (method_probe_run.hpp) while the
+    // stone is shown with the safe choice (the table).
     void choose_render_method();
-    // When no method holds the frame rate with the picture's extras (MSAA, glare), the picture
-    // is made without them and the methods are probed again; the journal says what each
-    // measured. Still views keep their averaged frames (they cost nothing while turning).
-    void shed_picture_extras(ProbeResult& probe, double budget_ms);
+    // One more probe frame, after a frame shown; once the choice is made, it is applied.
+    void advance_probe(double now_s);
+    // When no method holds the frame rate with the picture's extras (MSAA, glare), the methods
+    // are probed again without them, and the picture is made without them if that holds it;
+    // the journal says what each measured. Still views keep their averaged frames (they cost
+    // nothing while turning).
+    void apply_probe(double now_s);
     static std::string chosen_name(const ProbeResult& probe);  // the chosen candidate's name
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
+    void start_replay(double now_s);  // once the first frame and the probe's choice are shown
     // The camera for the gestures' view this frame, and in `omega` how fast the view turns.
     std::optional<Camera> view_camera(double now_s, glm::dvec3& omega);
     static bool same_view(const ViewState& a, const ViewState& b);
@@ -90,6 +95,7 @@ class KioskSession {
 
     std::unique_ptr<InputManager> input_;
     std::optional<EvemuReplay> replay_;
+    bool replay_started_ = false;
     std::unique_ptr<GestureController> gestures_;
     std::vector<InputEvent> pending_input_;
     double oldest_unshown_input_s_ = -1.0;
@@ -105,6 +111,9 @@ class KioskSession {
     DesignTables::KindTables scene_tables_;        // the tables the scene was made with
     RenderChoice render_;
     std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
+    std::unique_ptr<MethodProbe> probe_;     // auto: measuring while the stone is shown
+    std::optional<ProbeResult> probe_with_extras_;  // the first probe's, when extras are shed
+    double probe_budget_ms_ = 0.0;
 
     ServiceNotifier notifier_;
     bool first_frame_shown_ = false;

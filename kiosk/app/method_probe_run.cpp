@@ -1,5 +1,7 @@
 #include "app/method_probe_run.hpp"
 
+#include <GLES3/gl3.h>
+
 #include <chrono>
 #include <cmath>
 
@@ -12,52 +14,10 @@ namespace gem::kiosk {
 namespace {
 
 Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, double turn_deg,
-                            const gpu::RenderTarget& target) {
+                            glm::ivec2 size) {
     ViewState view = start;
     view.azimuth_deg += turn_deg;
-    return scene.camera(view, {target.width(), target.height()});
-}
-
-// Times whole frames of one scene, the picture's finishing passes included; stops once more
-// frames missed the budget than p90 allows.
-std::vector<double> measure(StoneScene& scene, gpu::HdrPicture& scene_picture,
-                            gpu::RenderTarget& target, const ViewState& start, double budget_ms,
-                            const ProbeOptions& options) {
-    // A piece's small stones modelled as the kiosk models them when it shows the scene.
-    if (!scene.choose_stone_models({target.width(), target.height()})) return {};
-    const int total = options.warmup_frames + options.frames;
-    const int allowed_misses =
-        options.frames -
-        static_cast<int>(std::ceil(kFrameTimeQuantile * static_cast<double>(options.frames)));
-    std::vector<double> times;
-    int misses = 0;
-    glm::dvec3 last_forward(0.0);
-    const double frame_s = std::isfinite(budget_ms) ? budget_ms / 1000.0 : 1.0 / 60.0;
-    for (int i = 0; i < total; ++i) {
-        auto camera = probe_camera(scene, start, options.turn_deg_per_frame * i, target);
-        if (!camera) break;
-        // As the kiosk's draw does: the turn's angular velocity lets the stone method prepare
-        // ahead (the table streams the way a drag does).
-        const glm::dvec3 forward = camera.value().forward();
-        const glm::dvec3 omega =
-            i > 0 ? glm::cross(last_forward, forward) / frame_s : glm::dvec3(0.0);
-        last_forward = forward;
-        const auto begin = std::chrono::steady_clock::now();
-        // The kiosk's own frame (kiosk_frame.hpp), as a screen draws it (no wait inside the
-        // frame), then waited for to the end of the GPU's work.
-        auto drawn = draw_kiosk_frame(&scene, &camera.value(), omega, gpu::FrameWait::none,
-                                      scene_picture, target);
-        const bool finished = drawn && drawn.value().scene_error.empty();
-        glFinish();
-        const double ms =
-            std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin)
-                .count();
-        if (i < options.warmup_frames) continue;
-        // A failed frame is recorded as not-a-number: choose_method drops it.
-        times.push_back(finished ? ms : std::nan(""));
-        if (finished && ms > budget_ms && ++misses > allowed_misses) break;
-    }
-    return times;
+    return scene.camera(view, size);
 }
 
 }  // namespace
@@ -70,51 +30,121 @@ RenderChoice apply_candidate(RenderChoice base, const MethodCandidate& candidate
     return base;
 }
 
-Result<ProbeResult> probe_methods(const CatalogueStone& stone, const LookChoice& look,
-                                  const RenderChoice& base, gpu::HdrPicture& scene_picture,
-                                  gpu::RenderTarget& target, const ViewState& start,
-                                  double budget_ms, const ProbeOptions& options) {
-    const double began_s = monotonic_now_s();
-    ProbeResult result;
+MethodProbe::~MethodProbe() = default;
+
+Result<std::unique_ptr<MethodProbe>> MethodProbe::start(
+    const CatalogueStone& stone, const LookChoice& look, const RenderChoice& base,
+    const gpu::PictureOptions& picture, glm::ivec2 size, const ViewState& start, double budget_ms,
+    const ProbeOptions& options) {
+    std::unique_ptr<MethodProbe> p(new MethodProbe());
+    p->began_s_ = monotonic_now_s();
+    p->stone_ = stone;
+    p->look_ = look;
+    p->base_ = base;
+    p->start_view_ = start;
+    p->budget_ms_ = budget_ms;
+    p->options_ = options;
+    p->result_.picture = picture;
+    auto hdr = gpu::HdrPicture::make(size.x, size.y, picture);
+    if (!hdr) return Error{hdr.error()};
+    p->picture_.emplace(std::move(hdr).value());
+    auto target = gpu::RenderTarget::make(size.x, size.y);
+    if (!target) return Error{target.error()};
+    p->target_.emplace(std::move(target).value());
     // The first rung's scene holds the database, which decides how many rungs there are: the
     // table level the stone's size needs.
-    std::vector<MethodCandidate> ladder = method_ladder(0);
+    const std::vector<MethodCandidate> ladder = method_ladder(0);
     auto first = StoneScene::make(stone, look, apply_candidate(base, ladder.front()));
     if (!first) return Error{first.error()};
+    ProbeResult& r = p->result_;
     if (first.value()->has_database()) {
         int needed_level = 0;
         const Database& db = first.value()->database();
-        auto camera = probe_camera(*first.value(), start, 0.0, target);
+        auto camera = probe_camera(*first.value(), start, 0.0, size);
         if (camera) {
             needed_level = static_cast<int>(
                 gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
         }
-        result.candidates = method_ladder(needed_level, db.params().dispersion);
+        r.candidates = method_ladder(needed_level, db.params().dispersion);
     } else {
         // A design has no tables: its rungs are the trace's, with exact fire first where its
         // material disperses (the fire a design shows, stone_scene.cpp).
-        result.candidates = method_ladder(0, first.value()->stone().material.disperses());
-        std::erase_if(result.candidates,
-                      [](const MethodCandidate& c) { return c.method != "trace"; });
+        r.candidates = method_ladder(0, first.value()->stone().material.disperses());
+        std::erase_if(r.candidates, [](const MethodCandidate& c) { return c.method != "trace"; });
     }
-    result.frame_ms.resize(result.candidates.size());
-    std::unique_ptr<StoneScene> scene = std::move(first).value();
+    r.frame_ms.resize(r.candidates.size());
     // With dispersion the ladder starts with a rung the first scene does not draw.
-    if (result.candidates.front().exact_fire != ladder.front().exact_fire) scene.reset();
-    for (std::size_t i = 0; i < result.candidates.size(); ++i) {
-        if (i > 0 || !scene) {
-            scene.reset();  // one scene's GL objects at a time
-            auto made = StoneScene::make(stone, look, apply_candidate(base, result.candidates[i]));
-            if (!made) continue;  // never measured, never chosen
-            scene = std::move(made).value();
-        }
-        result.frame_ms[i] = measure(*scene, scene_picture, target, start, budget_ms, options);
-        result.choice =
-            choose_method(result.frame_ms, budget_ms, refractive_rungs(result.candidates));
-        if (result.choice.fits) break;
+    if (r.candidates.front().exact_fire == ladder.front().exact_fire) {
+        p->scene_ = std::move(first).value();
     }
-    result.seconds = monotonic_now_s() - began_s;
-    return result;
+    return p;
+}
+
+bool MethodProbe::step() {
+    if (done_) return true;
+    if (!scene_) {
+        auto made =
+            StoneScene::make(stone_, look_, apply_candidate(base_, result_.candidates[index_]));
+        // A piece's small stones modelled as the kiosk models them when it shows the scene.
+        if (!made || !made.value()->choose_stone_models({target_->width(), target_->height()})) {
+            finish_candidate();  // never measured, never chosen
+            return done_;
+        }
+        scene_ = std::move(made).value();
+        frame_ = 0;
+        misses_ = 0;
+        last_forward_ = glm::dvec3(0.0);
+    }
+    const glm::ivec2 size(target_->width(), target_->height());
+    auto camera = probe_camera(*scene_, start_view_, options_.turn_deg_per_frame * frame_, size);
+    if (!camera) {
+        finish_candidate();
+        return done_;
+    }
+    // As the kiosk's draw does: the turn's angular velocity lets the stone method prepare
+    // ahead (the table streams the way a drag does).
+    const double frame_s = std::isfinite(budget_ms_) ? budget_ms_ / 1000.0 : 1.0 / 60.0;
+    const glm::dvec3 forward = camera.value().forward();
+    const glm::dvec3 omega =
+        frame_ > 0 ? glm::cross(last_forward_, forward) / frame_s : glm::dvec3(0.0);
+    last_forward_ = forward;
+    // The frame shown before this one is not this one's cost.
+    glFinish();
+    const auto begin = std::chrono::steady_clock::now();
+    // The kiosk's own frame, as a screen draws it (no wait inside the frame), then waited for
+    // to the end of the GPU's work. Every probe frame is a moving one.
+    picture_->begin_frame(false);
+    auto drawn = draw_kiosk_frame(scene_.get(), &camera.value(), omega, gpu::FrameWait::none,
+                                  *picture_, *target_);
+    const bool finished = drawn && drawn.value().scene_error.empty();
+    glFinish();
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    const int timed = frame_ - options_.warmup_frames;
+    ++frame_;
+    if (timed < 0) return false;
+    std::vector<double>& times = result_.frame_ms[index_];
+    // A failed frame is recorded as not-a-number: choose_method drops it.
+    times.push_back(finished ? ms : std::nan(""));
+    const int allowed_misses =
+        options_.frames -
+        static_cast<int>(std::ceil(kFrameTimeQuantile * static_cast<double>(options_.frames)));
+    if (finished && ms > budget_ms_) ++misses_;
+    if (misses_ > allowed_misses || timed + 1 >= options_.frames) finish_candidate();
+    return done_;
+}
+
+void MethodProbe::finish_candidate() {
+    scene_.reset();  // one candidate's GL objects at a time
+    result_.choice =
+        choose_method(result_.frame_ms, budget_ms_, refractive_rungs(result_.candidates));
+    ++index_;
+    if (result_.choice.fits || index_ >= result_.candidates.size()) {
+        done_ = true;
+        result_.seconds = monotonic_now_s() - began_s_;
+        picture_.reset();  // the probe's pictures are not kept
+        target_.reset();
+    }
 }
 
 }  // namespace gem::kiosk

@@ -5,9 +5,10 @@
 //     size): the scene (its stone and metal passes shown apart) drawn at 1 sample without glare
 //     and at 4× MSAA with glare 0.04, then the resolve, the still view's running mean, the
 //     glare pyramid and the tone curve, each bounded by glFinish; medians of --frames frames,
-//     trace (depth 8, first-order fire) and phong; and the share of a moving frame the passes
-//     after the scene take. The bench's last line is for a script to read, the trace at 4×
-//     MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5 costs R of zoom 1".
+//     trace (depth 8, first-order fire) and phong; the share of a moving frame the passes after
+//     the scene take; and the share of the picture they rewrote (around the piece and its
+//     glare's reach, hdr_picture.hpp). The bench's last line is for a script to read, the trace at
+//     4× MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5 costs R of zoom 1".
 //  2. Edges against the CPU reference at 16 samples per pixel, the loose diamond at 256²
 //     (zoom 1, 40° elevation, the studio, no glare, the same tone curve on both): the mean
 //     8-bit error on its edge pixels (where the reference's own single centre sample is more
@@ -81,6 +82,7 @@ gem::gpu::FrameRenderer make_renderer(const std::string& method, const gem::Ston
 struct PassCosts {
     double scene = 0.0, stone = 0.0, metal = 0.0, resolve = 0.0, mean = 0.0, glare = 0.0,
            tone = 0.0;
+    double rewritten = 0.0;  // share of the picture a moving frame's tone pass rewrote
     // A moving frame: the scene and the passes after it (the still view's mean is not in it).
     double total() const { return scene + resolve + glare + tone; }
     double finishing() const { return resolve + glare + tone; }
@@ -91,7 +93,7 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
                       const gem::gpu::RenderTarget& picture) {
     const int w = picture.width(), h = picture.height();
     auto hdr = must(gem::gpu::HdrPicture::make(w, h, options(samples, glare, 16)));
-    std::vector<double> scene, stone, metal, resolve, mean, glare_ms, tone;
+    std::vector<double> scene, stone, metal, resolve, mean, glare_ms, tone, rewritten;
     for (int f = -1; f < frames; ++f) {
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         view.zoom = zoom;
@@ -117,6 +119,9 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         (f % 2 == 1 ? mean : resolve).push_back(t.resolve_ms);
         glare_ms.push_back(t.glare_ms);
         tone.push_back(t.tone_ms);
+        if (f % 2 == 0) {
+            rewritten.push_back(static_cast<double>(hdr.target_region().area()) / (double(w) * h));
+        }
     }
     // The resolve is the moving frames' (a blit); mean is what the running mean's pass adds
     // on still frames.
@@ -126,7 +131,8 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
             median(resolve),
             median(mean) - median(resolve),
             median(glare_ms),
-            median(tone)};
+            median(tone),
+            median(rewritten)};
 }
 
 // The line a script reads: the trace at 4× MSAA with glare, the passes after the scene as a
@@ -144,9 +150,9 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         "at zoom 0.5 (median ms of %d frames; each pass bounded by glFinish; finishing: the "
         "passes after the scene, share of a moving frame)\n",
         w, h, frames);
-    std::printf("%-6s %-8s %-12s %7s %7s %7s %8s %7s %7s %7s %8s %10s\n", "zoom", "method",
+    std::printf("%-6s %-8s %-12s %7s %7s %7s %8s %7s %7s %7s %8s %10s %10s\n", "zoom", "method",
                 "picture", "scene", "stone", "metal", "resolve", "mean", "glare", "tone", "total",
-                "finishing");
+                "finishing", "rewritten");
     auto picture = must(gem::gpu::RenderTarget::make(w, h));
     struct Look {
         const char* name;
@@ -169,9 +175,9 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
                     time_passes(renderer, framing, zoom, look.samples, look.glare, frames, picture);
                 std::printf(
                     "%-6.2g %-8s %-12s %7.1f %7.1f %7.1f %8.1f %7.1f %7.1f %7.1f %8.1f "
-                    "%9.0f%%\n",
+                    "%9.0f%% %9.0f%%\n",
                     zoom, method, look.name, c.scene, c.stone, c.metal, c.resolve, c.mean, c.glare,
-                    c.tone, c.total(), 100.0 * c.finishing() / c.total());
+                    c.tone, c.total(), 100.0 * c.finishing() / c.total(), 100.0 * c.rewritten);
                 std::fflush(stdout);
                 if (std::strcmp(method, "trace") == 0 && look.samples == 4) {
                     kiosk_total[z] = c.total();

@@ -73,5 +73,22 @@ TEST(FrameStats, BoundedStatsKeepTheNewestFramesAndCountThemAll) {
         << stats.summary();
 }
 
+TEST(FrameStats, FramesDrawnWhileTheProbeMeasuredAreCountedApart) {
+    FrameStats stats;
+    // Two slow frames while the probe measured, then two of the chosen method: 0.5 s apart,
+    // each 20 ms, so 2 / 0.52 = 3.85 frames/s and a p50 of 20 ms.
+    stats.add({.start_s = 0.0, .draw_ms = 300.0, .probing = true});
+    stats.add({.start_s = 0.4, .draw_ms = 300.0, .probing = true});
+    stats.add({.start_s = 1.0, .draw_ms = 20.0});
+    stats.add({.start_s = 1.5, .draw_ms = 20.0, .interval_ms = 500.0});
+    EXPECT_EQ(stats.total(), 4);
+    const std::string s = stats.summary();
+    EXPECT_NE(s.find("2 frames in 0.5 s: 3.85 frames/s; draw ms p50 20.0"), std::string::npos) << s;
+    EXPECT_NE(s.find("2 more drawn while the method probe measured"), std::string::npos) << s;
+    FrameStats only_probing;
+    only_probing.add({.start_s = 0.0, .draw_ms = 300.0, .probing = true});
+    EXPECT_EQ(only_probing.summary(), "1 frames, all drawn while the method probe measured");
+}
+
 }  // namespace
 }  // namespace gem::kiosk

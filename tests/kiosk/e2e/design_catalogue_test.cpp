@@ -91,9 +91,13 @@ TEST(KioskDesigns, AStartupCatalogueOfDesignsIsProbedOverTheTraceAlone) {
     }
     std::ofstream(config, std::ios::trunc) << text;
     KioskProcess kiosk({GEMKIOSK_PATH, "--config", config.string(), "--seconds", "60"});
+    // The stone is shown at once, and measured between the frames shown.
     ASSERT_TRUE(kiosk.wait_for_line("first frame on screen", 60s)) << kiosk.log();
+    ASSERT_TRUE(kiosk.wait_for_line("render.method auto: p90", 60s)) << kiosk.log();
     const std::string log = kiosk.log();
+    const auto first_frame = log.find("first frame on screen");
     const auto at = log.find("render.method auto: p90 frame times trace ");
+    EXPECT_LT(first_frame, at) << "the first frame waits for the probe";
     ASSERT_NE(at, std::string::npos) << log;
     const std::string line = log.substr(at, log.find('\n', at) - at);
     EXPECT_EQ(line.find("table"), std::string::npos) << line;
