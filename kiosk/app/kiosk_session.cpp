@@ -405,6 +405,7 @@ void KioskSession::apply_probe(double now_s) {
                       chosen_ms(*probe_with_extras_), chosen_name(r).c_str(), chosen_ms(r),
                       r.picture.still_frames);
         log_warning(line);
+        r.seconds += probe_with_extras_->seconds;  // both probes: the choice's whole cost
         auto remade = gpu::HdrPicture::make(picture_->width(), picture_->height(), r.picture);
         if (remade) {
             scene_picture_.emplace(std::move(remade).value());
