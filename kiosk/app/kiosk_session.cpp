@@ -379,8 +379,10 @@ void KioskSession::apply_probe(double now_s) {
         const auto& statistic = p.choice.statistic_ms[p.choice.index];
         return statistic ? *statistic : std::nan("");
     };
-    const bool extras =
-        r.picture.samples > 1 || (r.picture.glare > 0.0 && scene_picture_->high_range());
+    // The extras the picture on screen has (a GPU may offer fewer samples than asked, or no
+    // float target for the glare).
+    const bool extras = scene_picture_->samples() > 1 ||
+                        (scene_picture_->options().glare > 0.0 && scene_picture_->high_range());
     if (r.choice.valid && !r.choice.fits && extras && !probe_with_extras_) {
         // Probed again without MSAA and glare, still between frames shown.
         gpu::PictureOptions without = r.picture;
