@@ -107,7 +107,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (!tabled) return Error{"frame renderer: " + tabled.error()};
         r.method_ = std::move(tabled).value();
     }
-    // The box about everything drawn: each stone's corners where it sits, and the metal.
+    // The box about everything drawn: each stone's vertices where it sits, and the metal.
     r.box_lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
     r.box_hi_ = -r.box_lo_;
     const auto hold = [&r](const glm::dvec3& p) {
