@@ -206,6 +206,7 @@ double KioskSession::next_deadline_s(double now_s) const {
         next = std::min(next, now_s + display_->timeout_ms() / 1000.0);
     }
     if (replay_) next = std::min(next, replay_->next_due_s());
+    if (input_) next = std::min(next, input_->next_retry_s());
     if (display_ && display_->ready()) next = std::min(next, next_frame_allowed_s());
     next = std::min(next, notifier_.next_ping_s(now_s));
     // A check of a design's tables runs on a thread with no descriptor to wake the loop.

@@ -31,9 +31,10 @@ void log_from_libseat(enum libseat_log_level level, const char* format, va_list 
     char text[512];
     std::vsnprintf(text, sizeof text, format, args);
     const std::string message = std::string("libseat: ") + text;
-    const bool unplugged =
-        closing_unplugged_device || (opening_path != nullptr && !device_present(*opening_path));
-    if (level == LIBSEAT_LOG_LEVEL_ERROR && !unplugged) {
+    // A device being opened: its caller reports a failure in its own words (and a node just
+    // plugged in may refuse for a moment, input_manager.hpp), so libseat's detail is debug.
+    const bool reported = closing_unplugged_device || opening_path != nullptr;
+    if (level == LIBSEAT_LOG_LEVEL_ERROR && !reported) {
         log_warning(message);
     } else {
         log_debug(message);

@@ -9,6 +9,7 @@
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 #include "service/device_presence.hpp"
 #include "service/log.hpp"
@@ -50,6 +51,7 @@ InputManager::InputManager(InputOptions options, DeviceOpener open, DeviceCloser
     }
     for (const std::string& directory : directories) watch(directory);
     scan();
+    started_ = true;
 }
 
 InputManager::~InputManager() {
@@ -103,11 +105,22 @@ void InputManager::add_device(const std::string& path, bool quiet) {
             log_debug("input device " + path + ": gone before it could be opened");
             return;
         }
+        if (started_) {
+            // Plugged in while running: settling for a moment is expected.
+            const double since = settling_.emplace(path, now_s_).first->second;
+            if (now_s_ - since < kSettleS) {
+                log_debug("input device " + path + ": not open yet: " + error_text(-fd));
+                return;
+            }
+            settling_.erase(path);
+            quiet = false;
+        }
         if (!quiet && failed_.insert(path).second)
             log_warning("input device " + path + ": cannot open: " + error_text(-fd));
         return;
     }
     failed_.erase(path);
+    settling_.erase(path);
     Result<std::unique_ptr<EvdevDevice>> created = EvdevDevice::create(fd, path);
     if (!created) {
         log_warning(created.error());
@@ -138,6 +151,7 @@ void InputManager::add_device(const std::string& path, bool quiet) {
 
 void InputManager::remove_device(const std::string& path, const char* why) {
     failed_.erase(path);
+    settling_.erase(path);
     ignored_.erase(path);
     const auto found = devices_.find(path);
     if (found == devices_.end()) return;
@@ -177,8 +191,19 @@ void InputManager::handle_notifications() {
     }
 }
 
-std::vector<InputEvent> InputManager::dispatch(double /*now_s*/) {
+double InputManager::next_retry_s() const {
+    return settling_.empty() ? std::numeric_limits<double>::infinity() : next_retry_s_;
+}
+
+std::vector<InputEvent> InputManager::dispatch(double now_s) {
+    now_s_ = now_s;
     std::vector<InputEvent> out;
+    if (!settling_.empty() && now_s >= next_retry_s_) {
+        std::vector<std::string> retry;
+        for (const auto& [path, since] : settling_) retry.push_back(path);
+        for (const std::string& path : retry) add_device(path, false);
+    }
+    next_retry_s_ = now_s + kRetryS;
     if (epoll_fd_ < 0) return out;
     std::array<epoll_event, 16> ready;
     std::vector<std::string> gone;

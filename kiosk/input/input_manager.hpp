@@ -39,10 +39,20 @@ class InputManager {
 
     // For the main loop's poll(); readable when dispatch() has something to do.
     int fd() const { return epoll_fd_; }
-    // Reads hotplug notices and every device's pending events; never blocks. Touch times are
-    // the devices' own (CLOCK_MONOTONIC); now_s stamps nothing yet and is kept for symmetry
-    // with the replay.
+    // Reads hotplug notices and every device's pending events, and tries again to open a new
+    // node that is settling; never blocks. Touch times are the devices' own (CLOCK_MONOTONIC);
+    // now_s (the same clock) times the retries.
     std::vector<InputEvent> dispatch(double now_s);
+    // When dispatch() must run again to retry a settling node, even with nothing to read.
+    double next_retry_s() const;
+
+    // A node plugged in may refuse to open for a moment: udev sets its owner and mode after
+    // creating it, and logind takes a device only once it has seen udev's notice too (a
+    // tablet plugged into the kiosk's VM: "No such device" from logind, then EAGAIN, 0.45 s
+    // before it opened). It is tried again every kRetryS, quietly, for kSettleS; still
+    // refused after that, the failure is logged once.
+    static constexpr double kSettleS = 2.0;
+    static constexpr double kRetryS = 0.1;
 
     // The devices open now, by path.
     std::vector<std::string> open_devices() const;
@@ -64,7 +74,11 @@ class InputManager {
     int inotify_fd_ = -1;
     std::map<int, std::string> watched_dirs_;  // inotify watch -> directory
     std::map<std::string, std::unique_ptr<EvdevDevice>> devices_;
-    std::set<std::string> failed_;   // could not be opened, logged; retried on IN_ATTRIB
+    std::set<std::string> failed_;            // could not be opened, logged; retried on IN_ATTRIB
+    std::map<std::string, double> settling_;  // plugged in, refused since; retried quietly
+    double now_s_ = 0.0;
+    double next_retry_s_ = 0.0;
+    bool started_ = false;           // past the scan at start, whose failures are logged at once
     std::set<std::string> ignored_;  // opened and of no use to the kiosk, until deleted
 };
 

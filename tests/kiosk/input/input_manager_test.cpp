@@ -15,6 +15,7 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -142,27 +143,60 @@ TEST_F(InputManagerTest, PermissionFixedLaterIsRetriedOnAttrib) {
     EXPECT_EQ(attempts.size(), 1u);
     EXPECT_TRUE(capture.lines().empty());
 
-    // udev changes the mode, still refused: now it is logged, once, with the errno text.
+    // udev changes the mode, still refused: tried again at once, quietly while it settles.
     ASSERT_EQ(::chmod(path("event3").c_str(), 0660), 0);
-    manager.dispatch(0.0);
+    manager.dispatch(0.05);
     EXPECT_EQ(attempts.size(), 2u);
+    EXPECT_TRUE(capture.lines().empty());
+    // Refused for longer than a node takes to settle: logged, once, with the errno text.
+    manager.dispatch(InputManager::kSettleS + 0.1);
+    EXPECT_EQ(attempts.size(), 3u);
     std::vector<std::string> lines = capture.lines();
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_TRUE(mentions(lines[0], path("event3"))) << lines[0];
     EXPECT_TRUE(mentions(lines[0], std::strerror(EACCES))) << lines[0];
     ASSERT_EQ(::chmod(path("event3").c_str(), 0640), 0);
-    manager.dispatch(0.0);
-    EXPECT_EQ(attempts.size(), 3u);
+    manager.dispatch(InputManager::kSettleS + 0.2);
+    EXPECT_EQ(attempts.size(), 4u);
     EXPECT_TRUE(capture.lines().empty());
 
     // Allowed at last: opened (and then refused as not an evdev device, logged once).
     allowed = true;
     ASSERT_EQ(::chmod(path("event3").c_str(), 0644), 0);
-    manager.dispatch(0.0);
-    EXPECT_EQ(attempts.size(), 4u);
+    manager.dispatch(InputManager::kSettleS + 0.3);
+    EXPECT_EQ(attempts.size(), 5u);
     lines = capture.lines();
     ASSERT_EQ(lines.size(), 1u);
     EXPECT_TRUE(mentions(lines[0], "not an evdev device")) << lines[0];
+}
+
+// A node plugged in that its seat refuses for a moment (logind has not taken it yet) is
+// opened by a retry, with nothing logged; the kiosk's loop is told when to retry.
+TEST_F(InputManagerTest, ANodeRefusedForAMomentIsOpenedByARetryQuietly) {
+    StderrCapture capture;
+    int refusals = 2;
+    std::vector<double> attempts;
+    double now = 10.0;
+    InputManager manager(options(), [&](const std::string& p) {
+        attempts.push_back(now);
+        return refusals-- > 0 ? -EAGAIN : open_device_node(p);
+    });
+    EXPECT_EQ(manager.next_retry_s(), std::numeric_limits<double>::infinity());
+    create("event6");
+    ASSERT_EQ(::chmod(path("event6").c_str(), 0660), 0);  // IN_CREATE and IN_ATTRIB at once
+    manager.dispatch(now);
+    EXPECT_EQ(attempts.size(), 2u);
+    EXPECT_NEAR(manager.next_retry_s(), now + InputManager::kRetryS, 1e-9);
+    now += 0.05;
+    manager.dispatch(now);  // too soon to retry
+    EXPECT_EQ(attempts.size(), 2u);
+    now = manager.next_retry_s();
+    manager.dispatch(now);
+    ASSERT_EQ(attempts.size(), 3u);  // opened, and refused as not an evdev device
+    const std::vector<std::string> lines = capture.lines();
+    ASSERT_EQ(lines.size(), 1u);
+    EXPECT_TRUE(mentions(lines[0], "not an evdev device")) << lines[0];
+    EXPECT_EQ(manager.next_retry_s(), std::numeric_limits<double>::infinity());
 }
 
 TEST_F(InputManagerTest, ANodeUnpluggedAsItIsOpenedIsNotAFault) {
