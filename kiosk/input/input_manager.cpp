@@ -202,9 +202,16 @@ std::vector<InputEvent> InputManager::dispatch(double now_s) {
         std::vector<std::string> retry;
         for (const auto& [path, since] : settling_) retry.push_back(path);
         for (const std::string& path : retry) add_device(path, false);
+        next_retry_s_ = now_s + kRetryS;
     }
-    next_retry_s_ = now_s + kRetryS;
-    if (epoll_fd_ < 0) return out;
+    read_devices(out);
+    // A node that began settling just now is first tried again a step later.
+    if (!settling_.empty() && next_retry_s_ <= now_s) next_retry_s_ = now_s + kRetryS;
+    return out;
+}
+
+void InputManager::read_devices(std::vector<InputEvent>& out) {
+    if (epoll_fd_ < 0) return;
     std::array<epoll_event, 16> ready;
     std::vector<std::string> gone;
     int count = 0;
@@ -226,7 +233,6 @@ std::vector<InputEvent> InputManager::dispatch(double now_s) {
         for (const std::string& path : gone) remove_device(path, nullptr);
         gone.clear();
     } while (count == static_cast<int>(ready.size()));
-    return out;
 }
 
 std::vector<std::string> InputManager::open_devices() const {

@@ -61,6 +61,7 @@ class InputManager {
     void scan();
     void watch(const std::string& directory);
     void handle_notifications();
+    void read_devices(std::vector<InputEvent>& out);  // hotplug notices and devices' events
     bool wanted(const std::string& path) const;
     // quiet: a failure to open is expected (udev may not have set permissions yet).
     void add_device(const std::string& path, bool quiet);
