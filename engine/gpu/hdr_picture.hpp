@@ -145,9 +145,9 @@ class HdrPicture {
     std::optional<BloomPass> glare_;
     Program finish_;
     VertexArray empty_;
-    // Where each surface differs from the background (bind()'s cover), and this frame's cover.
+    // This frame's cover (the last frame's until bind()), and where each surface differs from
+    // the background.
     std::optional<SceneCover> cover_;
-    std::optional<glm::vec3> background_;
     SurfaceDamage resolved_damage_;
     SurfaceDamage mean_damage_;
     SurfaceDamage target_damage_;

@@ -356,7 +356,6 @@ void KioskSession::choose_render_method() {
     }
     // Marked before probing: a probe that fails is not tried again once frames are on screen.
     probed_size_ = size;
-    probe_budget_ms_ = budget_ms;
     probe_with_extras_.reset();
     auto probe = MethodProbe::start(selection_->stone(), selection_->look(), render_,
                                     scene_picture_->options(), size, kStartView, budget_ms);
@@ -390,7 +389,7 @@ void KioskSession::apply_probe(double now_s) {
         without.samples = 1;
         without.glare = 0.0;
         auto again = MethodProbe::start(selection_->stone(), selection_->look(), render_, without,
-                                        display_->picture_size(), kStartView, probe_budget_ms_);
+                                        display_->picture_size(), kStartView, r.choice.budget_ms);
         if (again) {
             probe_with_extras_ = std::move(r);
             probe_ = std::move(again).value();
@@ -404,7 +403,7 @@ void KioskSession::apply_probe(double now_s) {
                       "picture: MSAA and glare off: no method held the %.1f ms budget with them "
                       "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
                       "averaged over %d frames",
-                      probe_budget_ms_, chosen_name(*probe_with_extras_).c_str(),
+                      r.choice.budget_ms, chosen_name(*probe_with_extras_).c_str(),
                       chosen_ms(*probe_with_extras_), chosen_name(r).c_str(), chosen_ms(r),
                       r.picture.still_frames);
         log_warning(line);
@@ -579,9 +578,8 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
 void KioskSession::start_replay(double now_s) {
     // A replay starts once the kiosk is on screen with its chosen method, so neither start-up
     // nor the method probe eats its first gestures, and its frames are the chosen method's.
-    if (!replay_ || replay_started_ || !first_frame_shown_ || probe_ || scene_stale_) return;
+    if (!replay_ || replay_->started() || !first_frame_shown_ || probe_ || scene_stale_) return;
     replay_->start(now_s);
-    replay_started_ = true;
 }
 
 void KioskSession::write_requested_snapshot() {

@@ -95,7 +95,6 @@ class KioskSession {
 
     std::unique_ptr<InputManager> input_;
     std::optional<EvemuReplay> replay_;
-    bool replay_started_ = false;
     std::unique_ptr<GestureController> gestures_;
     std::vector<InputEvent> pending_input_;
     double oldest_unshown_input_s_ = -1.0;
@@ -113,7 +112,6 @@ class KioskSession {
     std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
     std::unique_ptr<MethodProbe> probe_;     // auto: measuring while the stone is shown
     std::optional<ProbeResult> probe_with_extras_;  // the first probe's, when extras are shed
-    double probe_budget_ms_ = 0.0;
 
     ServiceNotifier notifier_;
     bool first_frame_shown_ = false;

@@ -41,6 +41,7 @@ class EvemuReplay {
     void set_mapping(const TouchMapping& mapping) { mapping_ = mapping; }
     // The recording's first event becomes due at now_s.
     void start(double now_s);
+    bool started() const { return started_; }
     // When poll() next has something to do, on the kiosk's clock; infinity when finished or
     // not started.
     double next_due_s() const;

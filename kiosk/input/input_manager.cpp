@@ -74,7 +74,7 @@ void InputManager::watch(const std::string& directory) {
 
 void InputManager::scan() {
     if (!options_.devices.empty()) {
-        for (const std::string& device : options_.devices) add_device(device, false);
+        for (const std::string& device : options_.devices) add_device(device);
         return;
     }
     std::error_code error;
@@ -85,7 +85,7 @@ void InputManager::scan() {
     }
     // A missing directory was reported by watch() already.
     std::sort(paths.begin(), paths.end());
-    for (const std::string& path : paths) add_device(path, false);
+    for (const std::string& path : paths) add_device(path);
 }
 
 bool InputManager::wanted(const std::string& path) const {
@@ -95,7 +95,7 @@ bool InputManager::wanted(const std::string& path) const {
     return is_event_node_name(std::filesystem::path(path).filename().string());
 }
 
-void InputManager::add_device(const std::string& path, bool quiet) {
+void InputManager::add_device(const std::string& path) {
     if (devices_.count(path) != 0 || ignored_.count(path) != 0) return;
     const int fd = open_(path);
     if (fd < 0) {
@@ -113,9 +113,8 @@ void InputManager::add_device(const std::string& path, bool quiet) {
                 return;
             }
             settling_.erase(path);
-            quiet = false;
         }
-        if (!quiet && failed_.insert(path).second)
+        if (failed_.insert(path).second)
             log_warning("input device " + path + ": cannot open: " + error_text(-fd));
         return;
     }
@@ -181,11 +180,9 @@ void InputManager::handle_notifications() {
             if (!wanted(path)) continue;
             if (event->mask & IN_DELETE) {
                 remove_device(path, "removed");
-            } else if (event->mask & IN_ATTRIB) {
-                // udev sets a new node's owner and mode after creating it: try again now.
-                add_device(path, false);
-            } else if (event->mask & (IN_CREATE | IN_MOVED_TO)) {
-                add_device(path, true);
+            } else if (event->mask & (IN_CREATE | IN_MOVED_TO | IN_ATTRIB)) {
+                // New, or udev has set its owner and mode after creating it: try (again) now.
+                add_device(path);
             }
         }
     }
@@ -201,7 +198,7 @@ std::vector<InputEvent> InputManager::dispatch(double now_s) {
     if (!settling_.empty() && now_s >= next_retry_s_) {
         std::vector<std::string> retry;
         for (const auto& [path, since] : settling_) retry.push_back(path);
-        for (const std::string& path : retry) add_device(path, false);
+        for (const std::string& path : retry) add_device(path);
         next_retry_s_ = now_s + kRetryS;
     }
     read_devices(out);

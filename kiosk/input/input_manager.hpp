@@ -63,8 +63,9 @@ class InputManager {
     void handle_notifications();
     void read_devices(std::vector<InputEvent>& out);  // hotplug notices and devices' events
     bool wanted(const std::string& path) const;
-    // quiet: a failure to open is expected (udev may not have set permissions yet).
-    void add_device(const std::string& path, bool quiet);
+    // Opens `path`: a failure is logged at once during the scan at start; a node plugged in
+    // later settles first (kSettleS).
+    void add_device(const std::string& path);
     void remove_device(const std::string& path, const char* why);
 
     InputOptions options_;
