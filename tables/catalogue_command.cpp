@@ -14,6 +14,7 @@
 #include <system_error>
 #include <vector>
 
+#include "catalogue_files.hpp"
 #include "commands.hpp"
 #include "scene/stone_file.hpp"
 #include "util/atomic_file.hpp"
@@ -28,16 +29,6 @@ bool is_model(const fs::path& file) {
     std::string e = file.extension().string();
     std::transform(e.begin(), e.end(), e.begin(), [](unsigned char c) { return std::tolower(c); });
     return e == ".asc" || e == ".obj" || e == ".stl";
-}
-
-// TOML's basic string: quotes and backslashes escaped (file names come from staff).
-std::string toml_string(const std::string& text) {
-    std::string out = "\"";
-    for (char c : text) {
-        if (c == '"' || c == '\\') out += '\\';
-        out += c;
-    }
-    return out + "\"";
 }
 
 }  // namespace
@@ -134,7 +125,12 @@ int run_catalogue(const CatalogueOptions& o) {
     if (!made) return fail(made.error());
     std::printf("gemtables: wrote %s: %d of %zu designs\n", (out / "catalogue.toml").c_str(),
                 written, designs.size());
-    return 0;
+    // Every file named with its digest (signed where a key is given), then packaged.
+    if (const int sealed = run_seal({o.out, o.secret_key}); sealed != 0) return sealed;
+    if (o.deb.version.empty()) return 0;
+    PackageOptions deb = o.deb;
+    deb.catalogue_dir = o.out;
+    return run_package(deb);
 }
 
 }  // namespace gem::tables

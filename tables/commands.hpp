@@ -32,12 +32,31 @@ struct BuildOptions {
     std::uint64_t memory_mb = 0;
 };
 
+// gemtables package: a catalogue folder as a Debian package that installs it in
+// /usr/share/gemkiosk/catalogues/<package>/, where the kiosk takes it from.
+struct PackageOptions {
+    std::string catalogue_dir;
+    std::string version;  // Debian version, e.g. "2027.1"
+    std::string package;  // empty: gemkiosk-catalogue-<the catalogue's name>
+    std::string out_dir;  // empty: beside the catalogue folder
+    std::string maintainer = "gemkiosk catalogue <root@localhost>";
+};
+
+// gemtables seal: writes the manifest's [sha256] table, then signs it with minisign when a
+// secret key is given.
+struct SealOptions {
+    std::string catalogue_dir;
+    std::string secret_key;  // minisign's secret key file; empty: not signed
+};
+
 struct CatalogueOptions {
     std::string designs_dir;  // stone descriptions (.toml) and models (.asc, .obj, .stl)
     std::string out;          // the catalogue folder to write
     std::string name = "designs";
     std::string material = "diamond";  // for model files (a .toml names its own)
     BuildOptions build;                // the tables of stones that need them
+    std::string secret_key;            // sign with minisign (gemtables seal)
+    PackageOptions deb;                // a version: also package it (gemtables package)
 };
 
 struct VerifyOptions {
@@ -56,6 +75,8 @@ struct InspectOptions {
 
 int run_build(const BuildOptions& options);
 int run_catalogue(const CatalogueOptions& options);
+int run_seal(const SealOptions& options);
+int run_package(const PackageOptions& options);
 int run_info(const std::string& database);
 // gemtables piece: a piece (.toml, .glb, .gltf) written as a .glb.
 int run_piece(const std::string& piece_file, const std::string& out);

@@ -117,6 +117,27 @@ int main(int argc, char** argv) {
         ->capture_default_str();
     c->add_option("--jobs", catalogue.build.jobs, "tracing threads (default: every core)")
         ->check(CLI::Range(1, 1024));
+    c->add_option("--sign", catalogue.secret_key,
+                  "sign the manifest with this minisign secret key (as gemtables seal --sign)");
+    c->add_option("--deb", catalogue.deb.version,
+                  "also make a Debian package of this version (as gemtables package)");
+
+    SealOptions seal;
+    CLI::App* s = app.add_subcommand(
+        "seal", "name every file of a catalogue with its SHA-256 in the manifest, and sign it");
+    s->add_option("catalogue", seal.catalogue_dir, "catalogue folder")->required();
+    s->add_option("--sign", seal.secret_key, "minisign secret key file to sign the manifest with");
+
+    PackageOptions package;
+    CLI::App* k = app.add_subcommand(
+        "package", "a sealed catalogue as a Debian package for a chain's apt repository");
+    k->add_option("catalogue", package.catalogue_dir, "catalogue folder")->required();
+    k->add_option("--version", package.version, "the package's version, e.g. 2027.1")->required();
+    k->add_option("--package", package.package,
+                  "package name (default: gemkiosk-catalogue-<catalogue name>)");
+    k->add_option("-o,--out-dir", package.out_dir, "folder for the .deb (default: beside it)");
+    k->add_option("--maintainer", package.maintainer, "the package's Maintainer field")
+        ->capture_default_str();
 
     VerifyOptions verify;
     CLI::App* v = app.add_subcommand(
@@ -159,6 +180,8 @@ int main(int argc, char** argv) {
         }
         return run_catalogue(catalogue);
     }
+    if (s->parsed()) return run_seal(seal);
+    if (k->parsed()) return run_package(package);
     if (i->parsed()) return run_info(info_db);
     if (p->parsed()) return run_piece(piece_in, piece_out);
     if (v->parsed()) return run_verify(verify);

@@ -36,6 +36,26 @@ CatalogueOptions catalogue_options(const KioskConfig& config) {
     options.default_catalogue = config.catalogue.default_dir;
     options.settle_time =
         std::chrono::milliseconds(static_cast<long>(config.catalogue.settle_s * 1000.0));
+    std::vector<std::string> problems;
+    options.trust = load_trust(config.catalogue.trusted_keys, problems);
+    options.trust.required = options.trust.required || config.catalogue.trusted_keys_unreadable;
+    for (const std::string& problem : problems) {
+        log_error("trusted key left out: " + problem +
+                  "; catalogues signed with it will be refused");
+    }
+    if (!options.trust.required) {
+        log_warning(
+            "catalogues are not authenticated: [catalogue] trusted_keys lists no key, so "
+            "any well-formed catalogue in the inbox or a watched folder is shown");
+    } else if (options.trust.keys.empty()) {
+        log_error("no trusted key could be read: every delivered catalogue will be refused");
+    } else {
+        std::string keys;
+        for (const MinisignKey& key : options.trust.keys) {
+            keys += (keys.empty() ? "" : ", ") + key_id_text(key.id) + " (" + key.source + ")";
+        }
+        log_info("catalogues must be signed by a trusted key: " + keys);
+    }
     return options;
 }
 
@@ -250,8 +270,9 @@ void KioskSession::dispatch(double now_s) {
 
 void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
     log_notice("showing catalogue '" + catalogue.name + "' (" +
-               std::to_string(catalogue.stones.size()) + " stones) from " +
-               catalogue.directory.string());
+               std::to_string(catalogue.stones.size()) + " stones" +
+               (catalogue.signed_by.empty() ? "" : ", signed by key " + catalogue.signed_by) +
+               ") from " + catalogue.directory.string());
     for (const std::string& why : catalogue.left_out) log_error(why);
     for (const std::string& note : catalogue.notes) log_info(note);
     if (picture_ && crossfade_ && first_frame_shown_) {

@@ -6,6 +6,7 @@
 
 #include <chrono>
 #include <filesystem>
+#include <map>
 #include <memory>
 #include <optional>
 #include <string>
@@ -13,6 +14,7 @@
 
 #include <glm/glm.hpp>
 
+#include "catalogue/catalogue_signature.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "piece/piece.hpp"
 #include "tables/reader.hpp"
@@ -20,7 +22,8 @@
 namespace gem::kiosk {
 
 struct CatalogueOptions {
-    // Staff drop catalogue directories here (systemd/ makes it writable for them).
+    // Staff drop catalogue directories here (systemd/ makes it writable for them); those
+    // refused are set aside there as <name>.rejected (catalogue_store.hpp).
     std::filesystem::path inbox_dir = "/var/lib/gemkiosk/inbox";
     // Further places to look, such as a USB stick's mount point; one that does not exist yet
     // is looked at again when the mount table changes or on rescan().
@@ -33,6 +36,9 @@ struct CatalogueOptions {
     // A directory is considered only once no file in it has changed size or mtime for this
     // long: a copy in progress (cp, a file manager, rsync) keeps changing them.
     std::chrono::milliseconds settle_time{5000};
+    // Keys a catalogue's manifest must be signed with (config [catalogue] trusted_keys, read at
+    // start); not required: catalogues are taken unsigned (catalogue_signature.hpp).
+    CatalogueTrust trust;
 };
 
 enum class RingKind {
@@ -75,6 +81,10 @@ struct Catalogue {
     // What validation found worth saying of the stones kept: how a glTF piece's stones were
     // recognised and what they are made of, a line each.
     std::vector<std::string> notes;
+    // The manifest's [sha256] table: every other file (relative) and its SHA-256 in hex.
+    std::map<std::string, std::string> digests;
+    // The key that signed the manifest, as minisign prints its id; empty when unsigned.
+    std::string signed_by;
 };
 
 }  // namespace gem::kiosk

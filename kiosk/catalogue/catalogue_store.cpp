@@ -220,9 +220,9 @@ void remove_partial_copies(const fs::path& state_dir) {
     for (const fs::path& path : doomed) fs::remove_all(path, ec);
 }
 
-std::vector<std::uint64_t> read_installed_sources(const fs::path& state_dir) {
+std::vector<std::uint64_t> read_sources(const fs::path& state_dir, const char* list) {
     std::vector<std::uint64_t> out;
-    std::ifstream in(state_dir / "installed-sources");
+    std::ifstream in(state_dir / list);
     std::string line;
     while (std::getline(in, line)) {
         try {
@@ -234,8 +234,9 @@ std::vector<std::uint64_t> read_installed_sources(const fs::path& state_dir) {
     return out;
 }
 
-Result<bool> remember_installed_source(const fs::path& state_dir, std::uint64_t fingerprint) {
-    std::vector<std::uint64_t> known = read_installed_sources(state_dir);
+Result<bool> remember_source(const fs::path& state_dir, const char* list,
+                             std::uint64_t fingerprint) {
+    std::vector<std::uint64_t> known = read_sources(state_dir, list);
     known.push_back(fingerprint);
     if (known.size() > kRememberedSources)
         known.erase(known.begin(), known.end() - kRememberedSources);
@@ -245,9 +246,32 @@ Result<bool> remember_installed_source(const fs::path& state_dir, std::uint64_t 
         std::snprintf(line, sizeof line, "%016llx\n", static_cast<unsigned long long>(f));
         text += line;
     }
-    auto written = write_file_atomic(state_dir / "installed-sources", text.data(), text.size());
+    auto written = write_file_atomic(state_dir / list, text.data(), text.size());
     if (!written) return Error{written.error()};
     return true;
+}
+
+Result<fs::path> set_aside_rejected(const fs::path& source, const std::string& reason) {
+    std::error_code ec;
+    const fs::path parent = source.parent_path();
+    const std::string name = source.filename().string();
+    fs::path target = parent / (name + kRejectedSuffix);
+    for (int n = 2; fs::exists(fs::symlink_status(target, ec)) ||
+                    fs::exists(fs::symlink_status(fs::path(target.string() + ".txt"), ec));
+         ++n) {
+        target = parent / (name + "-" + std::to_string(n) + kRejectedSuffix);
+    }
+    if (::rename(source.c_str(), target.c_str()) != 0) return fault(target, errno);
+    const std::string text = "gemkiosk refused the catalogue " + name + ":\n" + reason +
+                             "\n\nMend it and copy it into the inbox again; the folder " +
+                             target.filename().string() + " and this note may be deleted.\n";
+    const fs::path note(target.string() + ".txt");
+    auto written = write_file_atomic(note, text.data(), text.size());
+    if (!written) log_warning("cannot write why " + name + " was refused: " + written.error());
+    // The kiosk's umask keeps its own files private; this one is for staff to read.
+    fs::permissions(note, fs::perms(0644), ec);
+    if (auto synced = sync_path(parent, true); !synced) log_warning(synced.error());
+    return target;
 }
 
 Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options) {
@@ -255,11 +279,13 @@ Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options) {
     std::error_code ec;
     std::string why_not_current = current.string() + ": none installed";
     if (fs::exists(fs::symlink_status(current, ec))) {
-        Result<Catalogue> installed = validate_catalogue(current);
+        Result<Catalogue> installed = validate_catalogue(current, options.trust);
         if (installed) return installed;
         why_not_current = installed.error();
         log_warning(why_not_current + " (" + current.string() + "); using the default catalogue");
     }
+    // The shipped catalogue is part of the kiosk's own installation, not a delivery: its
+    // digests are checked where it has them, but no chain signs it.
     Result<Catalogue> shipped = validate_catalogue(options.default_catalogue);
     if (shipped) return shipped;
     return Error{"no catalogue to show: " + why_not_current + "; default " +

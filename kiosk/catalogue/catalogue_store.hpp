@@ -3,6 +3,7 @@
 //   state/catalogues/<name>-<n>/   complete copies, each written whole before it gets its name
 //   state/current -> catalogues/<name>-<n>   the one on screen, replaced by rename(2)
 //   state/installed-sources        fingerprints of sources already installed (one hex a line)
+//   state/refused-sources          ... and of sources refused that could not be moved aside
 // rename(2) replaces its target atomically (POSIX rename: "a link named new shall remain
 // visible to other threads throughout the renaming operation"), so state/current always
 // resolves to a complete copy, the old or the new one.
@@ -41,9 +42,25 @@ void prune_copies(const std::filesystem::path& state_dir,
 // Removes the temporaries of copies a crash or power cut interrupted.
 void remove_partial_copies(const std::filesystem::path& state_dir);
 
-std::vector<std::uint64_t> read_installed_sources(const std::filesystem::path& state_dir);
-Result<bool> remember_installed_source(const std::filesystem::path& state_dir,
-                                       std::uint64_t fingerprint);
+// Fingerprints of sources already dealt with, kept across restarts in state/<list>: those
+// installed (kInstalledSources), and those refused where they could not be moved aside
+// (kRefusedSources: a read-only stick, a package's folder). The newest 256 of each are kept.
+inline constexpr const char* kInstalledSources = "installed-sources";
+inline constexpr const char* kRefusedSources = "refused-sources";
+std::vector<std::uint64_t> read_sources(const std::filesystem::path& state_dir, const char* list);
+Result<bool> remember_source(const std::filesystem::path& state_dir, const char* list,
+                             std::uint64_t fingerprint);
+
+// A refused catalogue in the inbox is set aside there: renamed to <name>.rejected (with -2,
+// -3 ... before the suffix when taken), with <name>.rejected.txt beside it saying why, so staff
+// find the reason where they put the catalogue and it is reported once. The watcher does not
+// look at folders so named. Renamed within the inbox because rename(2) moves a directory into
+// another folder only with write permission on the directory itself (to update its ".."), and
+// a clerk's copy does not give the kiosk that. The error says why it could not be renamed (the
+// caller then remembers its fingerprint instead).
+inline constexpr const char* kRejectedSuffix = ".rejected";
+Result<std::filesystem::path> set_aside_rejected(const std::filesystem::path& source,
+                                                 const std::string& reason);
 
 // At start: state/current if it validates, else the shipped default; a fault in the first is
 // logged as a warning. The error says why neither could be used.

@@ -114,7 +114,11 @@ std::vector<fs::path> CatalogueWatcher::candidates() const {
             std::error_code type_ec;
             // Hidden directories are left alone, so staff (or rsync) can write a catalogue
             // under a dot name and rename it when done.
-            if (entry.path().filename().string().front() != '.' && entry.is_directory(type_ec) &&
+            // A catalogue refused before is set aside under <name>.rejected.
+            const std::string name = entry.path().filename().string();
+            const bool rejected =
+                name.size() > std::strlen(kRejectedSuffix) && name.ends_with(kRejectedSuffix);
+            if (name.front() != '.' && !rejected && entry.is_directory(type_ec) &&
                 !entry.is_symlink(type_ec)) {
                 inside.push_back(entry.path());
             }
@@ -127,8 +131,11 @@ std::vector<fs::path> CatalogueWatcher::candidates() const {
 
 void CatalogueWatcher::run(std::stop_token stop) {
     remove_partial_copies(options_.state_dir);
-    for (const std::uint64_t f : read_installed_sources(options_.state_dir)) {
+    for (const std::uint64_t f : read_sources(options_.state_dir, kInstalledSources)) {
         installed_sources_.insert(f);
+    }
+    for (const std::uint64_t f : read_sources(options_.state_dir, kRefusedSources)) {
+        refused_sources_.insert(f);
     }
     // The mount table changes when a stick is mounted; poll reports it as POLLPRI (proc(5)).
     const int mounts_fd = ::open("/proc/self/mountinfo", O_RDONLY | O_CLOEXEC);
@@ -176,9 +183,15 @@ std::optional<std::chrono::milliseconds> CatalogueWatcher::scan(std::stop_token 
             handled_[source] = {hash, Outcome::installed};
             continue;
         }
+        if (refused_sources_.count(hash) != 0) {
+            handled_[source] = {hash, Outcome::rejected};
+            log_debug("catalogue at " + source.string() + " was refused before and is unchanged");
+            continue;
+        }
+        if (fingerprint.value().unpacking) it->second.since = now;  // a package half unpacked
         const auto quiet =
             std::chrono::duration_cast<std::chrono::milliseconds>(now - it->second.since);
-        if (quiet < options_.settle_time) {
+        if (quiet < options_.settle_time || fingerprint.value().unpacking) {
             const auto left = options_.settle_time - quiet;
             next = next ? std::min(*next, left) : left;
             continue;
@@ -204,11 +217,11 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
     const std::string from = " (from " + source.string() + ")";
     handled_[source] = {fingerprint.hash, Outcome::rejected};
     ++validations_;
-    Result<Catalogue> checked = validate_catalogue(source, stop);
+    Result<Catalogue> checked = validate_catalogue(source, options_.trust, stop);
     if (stop.stop_requested()) return;
     if (!checked) {
-        log_error(checked.error() + from);
-        ++rejections_;
+        refuse(source, fingerprint.hash, checked.error() + from);
+        ++rejections_;  // after the line: tests wait on the count, then read the log
         return;
     }
     const std::string name = checked.value().name;
@@ -233,7 +246,7 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
                  from);
         return;
     }
-    Result<Catalogue> installed = validate_catalogue(copy.value(), stop);
+    Result<Catalogue> installed = validate_catalogue(copy.value(), options_.trust, stop);
     if (stop.stop_requested()) {
         fs::remove_all(copy.value(), ec);
         return;
@@ -253,7 +266,7 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
         return;
     }
     prune_copies(options_.state_dir, {installed.value().directory, previous});
-    if (auto remembered = remember_installed_source(options_.state_dir, fingerprint.hash);
+    if (auto remembered = remember_source(options_.state_dir, kInstalledSources, fingerprint.hash);
         !remembered) {
         log_warning("catalogue '" + name + "': " + remembered.error());
     }
@@ -268,6 +281,33 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
     }
     ++installs_;
     signal_eventfd(ready_fd_);
+}
+
+void CatalogueWatcher::refuse(const fs::path& source, std::uint64_t fingerprint,
+                              const std::string& why) {
+    // A catalogue in the inbox is set aside there as <name>.rejected with a note saying why;
+    // one on a stick or in a package's folder stays as it is and is remembered instead. Either
+    // way it is reported once, not again at every start.
+    std::error_code ec;
+    const bool in_inbox = fs::equivalent(source.parent_path(), options_.inbox_dir, ec);
+    std::string not_moved;
+    if (in_inbox) {
+        Result<fs::path> moved = set_aside_rejected(source, why);
+        if (moved) {
+            handled_.erase(source);
+            seen_.erase(source);
+            log_error(why + "; set aside as " + moved.value().string() + " (the reason is in " +
+                      moved.value().filename().string() + ".txt beside it)");
+            return;
+        }
+        not_moved = "; cannot set it aside (" + moved.error() + ")";
+    }
+    refused_sources_.insert(fingerprint);
+    if (auto remembered = remember_source(options_.state_dir, kRefusedSources, fingerprint);
+        !remembered) {
+        log_warning("cannot remember a refused catalogue: " + remembered.error());
+    }
+    log_error(why + not_moved + "; not reported again until it changes");
 }
 
 }  // namespace gem::kiosk

@@ -11,8 +11,10 @@
 //      the original may be on a stick that is pulled), and switches state/current to it;
 //   4. hands the new Catalogue to the main loop: event_fd() becomes readable and
 //      take_switch() returns it; the loop switches between frames.
-// A rejected directory gets one error line and is remembered by fingerprint, so it is not
-// validated again until it changes. Sources already installed are remembered across restarts
+// A rejected directory gets one error line. In the inbox it is set aside as <name>.rejected
+// with a note saying why; elsewhere (a stick, a package's folder) it is remembered by
+// fingerprint across restarts (state/refused-sources), so it is not validated again until it
+// changes. Sources already installed are remembered across restarts
 // (state/installed-sources), so a restart does not reinstall what is still in the inbox.
 
 #include <atomic>
@@ -75,6 +77,9 @@ class CatalogueWatcher {
     void process(const std::filesystem::path& source, const DirectoryFingerprint& fingerprint,
                  std::stop_token stop);
     void watch(const std::filesystem::path& dir);
+    // Reports a source validation refused, once (set aside, or the refused-sources list).
+    void refuse(const std::filesystem::path& source, std::uint64_t fingerprint,
+                const std::string& why);
 
     const CatalogueOptions options_;
     const int inotify_fd_;
@@ -86,6 +91,7 @@ class CatalogueWatcher {
     std::map<std::filesystem::path, Seen> seen_;
     std::map<std::filesystem::path, Handled> handled_;
     std::set<std::uint64_t> installed_sources_;
+    std::set<std::uint64_t> refused_sources_;
     std::set<std::filesystem::path> missing_logged_;
 
     mutable std::mutex mutex_;

@@ -18,6 +18,7 @@ struct Entry {
     std::uint32_t mode = 0;
     std::int64_t size = 0;
     std::int64_t mtime_ns = 0;
+    std::int64_t ctime_ns = 0;
 };
 
 }  // namespace
@@ -44,8 +45,12 @@ Result<DirectoryFingerprint> fingerprint_directory(const std::filesystem::path& 
         e.size = st.st_size;
         e.mtime_ns =
             static_cast<std::int64_t>(st.st_mtim.tv_sec) * 1'000'000'000 + st.st_mtim.tv_nsec;
+        e.ctime_ns =
+            static_cast<std::int64_t>(st.st_ctim.tv_sec) * 1'000'000'000 + st.st_ctim.tv_nsec;
         if (S_ISDIR(st.st_mode)) result.directories.push_back(path);
         if (S_ISREG(st.st_mode)) {
+            const std::string ext = path.extension().string();
+            if (ext == ".dpkg-new" || ext == ".dpkg-tmp") result.unpacking = true;
             ++result.files;
             result.bytes += static_cast<std::uint64_t>(st.st_size);
         }
@@ -62,6 +67,7 @@ Result<DirectoryFingerprint> fingerprint_directory(const std::filesystem::path& 
         XXH64_update(state, &e.mode, sizeof e.mode);
         XXH64_update(state, &e.size, sizeof e.size);
         XXH64_update(state, &e.mtime_ns, sizeof e.mtime_ns);
+        XXH64_update(state, &e.ctime_ns, sizeof e.ctime_ns);
     }
     result.hash = XXH64_digest(state);
     XXH64_freeState(state);

@@ -2,7 +2,11 @@
 // against the keys a table knows, so that a typo is an error and not a silently ignored line.
 #include "catalogue/manifest.hpp"
 
+#include <cerrno>
 #include <cmath>
+#include <cstring>
+#include <fstream>
+#include <map>
 #include <optional>
 #include <set>
 #include <string>
@@ -11,6 +15,7 @@
 
 #include <toml++/toml.h>
 
+#include "catalogue_files.hpp"
 #include "piece/metal.hpp"
 
 namespace gem::kiosk {
@@ -151,18 +156,55 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
     return std::nullopt;
 }
 
+// [sha256]: "relative/file" = "<64 lowercase hex digits>" (tables/catalogue_files.hpp).
+Problem read_digests(const toml::node& node, std::map<std::string, std::string>& out) {
+    const toml::table* t = node.as_table();
+    if (t == nullptr) return error_at(node, "sha256", "expected a table [sha256]");
+    for (auto&& [key, value] : *t) {
+        const std::string name(key.str());
+        const std::string full = "sha256.\"" + name + "\"";
+        if (!tables::is_catalogue_file_name(name)) {
+            return error_at(key.source().begin.line, full,
+                            "must name a file inside the catalogue directory");
+        }
+        const std::optional<std::string> digest = value.value<std::string>();
+        const bool hex = digest && digest->size() == 64 &&
+                         digest->find_first_not_of("0123456789abcdef") == std::string::npos;
+        if (!value.is_string() || !hex) {
+            return error_at(value, full, "expected a SHA-256 digest (64 lowercase hex digits)");
+        }
+        out[name] = *digest;
+    }
+    return std::nullopt;
+}
+
 }  // namespace
 
-Result<Catalogue> read_manifest(const std::filesystem::path& dir) {
+Result<std::string> read_manifest_text(const std::filesystem::path& dir) {
     const std::filesystem::path path = dir / kManifestName;
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error{std::string(kManifestName) + ": " + std::strerror(errno)};
+    // A manifest names a few dozen stones; a file far larger is not one.
+    constexpr std::size_t kLargest = 16 << 20;
+    std::string text(kLargest + 1, '\0');
+    in.read(text.data(), static_cast<std::streamsize>(text.size()));
+    if (in.bad()) return Error{std::string(kManifestName) + ": read error"};
+    text.resize(static_cast<std::size_t>(in.gcount()));
+    if (text.size() > kLargest) return Error{std::string(kManifestName) + ": larger than 16 MiB"};
+    return text;
+}
+
+Result<Catalogue> read_manifest(const std::filesystem::path& dir) {
+    Result<std::string> text = read_manifest_text(dir);
+    if (!text) return Error{text.error()};
+    return parse_manifest(text.value(), dir);
+}
+
+Result<Catalogue> parse_manifest(std::string_view text, const std::filesystem::path& dir) {
     toml::table doc;
     try {
-        doc = toml::parse_file(path.string());
+        doc = toml::parse(text, (dir / kManifestName).string());
     } catch (const toml::parse_error& err) {
-        // toml++ reports a missing file as a parse error at line 0.
-        if (err.source().begin.line == 0) {
-            return Error{std::string(kManifestName) + ": " + std::string(err.description())};
-        }
         return error_at(err.source().begin.line, "syntax", err.description());
     }
     Catalogue catalogue;
@@ -194,6 +236,8 @@ Result<Catalogue> read_manifest(const std::filesystem::path& dir) {
                 }
                 catalogue.stones.push_back(std::move(stone));
             }
+        } else if (k == "sha256") {
+            if (auto e = read_digests(node, catalogue.digests)) return *e;
         } else {
             return error_at(key.source().begin.line, k, "unknown key");
         }

@@ -21,22 +21,36 @@
 //   background = "velvet"                # optional preset names
 //   lighting = "shop-window"
 //
+//   [sha256]                             # optional, required where trusted keys are listed:
+//   "stones/sapphire.gemdb" = "9f86..."  # every other file and its SHA-256, written by gemtables
+//                                        # (tables/catalogue_files.hpp); the last table
+//
 // Unknown keys are errors. Every error names the file, the line and the key, as the stone
 // files do (config/stones/README.md): "catalogue.toml:12: stone.metal: unknown metal 'bronze'".
 // Files must lie inside the directory (relative, no ".."), because only the directory is
 // copied when the catalogue is installed.
 
 #include <filesystem>
+#include <string>
+#include <string_view>
 
 #include "catalogue/catalogue.hpp"
+#include "catalogue_files.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
 
-inline constexpr const char* kManifestName = "catalogue.toml";
+using tables::kManifestName;
+using tables::kSignatureName;
 
-// Parses `dir`/catalogue.toml; paths come back absolute, nothing is opened yet
+// `dir`/catalogue.toml's bytes, read once so that what a signature is checked against is what
+// is parsed.
+Result<std::string> read_manifest_text(const std::filesystem::path& dir);
+
+// Parses a manifest's text; paths come back absolute under `dir`, nothing is opened yet
 // (CatalogueStone::opened and ring_mesh stay empty).
+Result<Catalogue> parse_manifest(std::string_view text, const std::filesystem::path& dir);
+// read_manifest_text, then parse_manifest.
 Result<Catalogue> read_manifest(const std::filesystem::path& dir);
 
 }  // namespace gem::kiosk

@@ -2,8 +2,10 @@
 
 #include <system_error>
 
+#include "catalogue/catalogue_signature.hpp"
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
+#include "catalogue_files.hpp"
 #include "piece/metal_obj.hpp"
 #include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"
@@ -23,11 +25,8 @@ std::string relative_message(const std::string& message, const std::filesystem::
 
 }  // namespace
 
-Result<Catalogue> validate_catalogue(const std::filesystem::path& dir) {
-    return validate_catalogue(dir, std::stop_token{});
-}
-
-Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop_token stop) {
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const CatalogueTrust& trust,
+                                     std::stop_token stop) {
     std::string label = dir.filename().string();
     auto reject = [&](const std::string& fault) {
         return Error{"catalogue '" + label + "' rejected: " + fault};
@@ -37,10 +36,31 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop
     if (ec) return reject(dir.string() + ": " + ec.message());
     if (!std::filesystem::is_directory(real, ec)) return reject(dir.string() + ": not a directory");
 
-    Result<Catalogue> manifest = read_manifest(real);
+    // The manifest's bytes are read once: what its signature is checked against is what is
+    // parsed, and nothing of a catalogue from an unknown signer is parsed at all.
+    Result<std::string> text = read_manifest_text(real);
+    if (!text) return reject(text.error());
+    std::string signed_by;
+    if (trust.required) {
+        Result<std::string> key = check_manifest_signature(real, text.value(), trust);
+        if (!key) return reject(key.error());
+        signed_by = key.value();
+    }
+    Result<Catalogue> manifest = parse_manifest(text.value(), real);
     if (!manifest) return reject(manifest.error());
     Catalogue catalogue = std::move(manifest).value();
+    catalogue.signed_by = signed_by;
     label = catalogue.name;
+    if (trust.required && catalogue.digests.empty()) {
+        return reject(std::string(kManifestName) +
+                      ": names no file's SHA-256 ([sha256]: gemtables catalogue or gemtables "
+                      "seal writes it), so its signature does not cover the catalogue");
+    }
+    if (!catalogue.digests.empty()) {
+        if (stop.stop_requested()) return reject("validation stopped (shutting down)");
+        Result<bool> whole = tables::check_catalogue_digests(real, catalogue.digests);
+        if (!whole) return reject(whole.error());
+    }
     std::vector<CatalogueStone> kept;
     for (CatalogueStone& stone : catalogue.stones) {
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");

@@ -9,14 +9,17 @@
 #include <stop_token>
 
 #include "catalogue/catalogue.hpp"
+#include "catalogue/catalogue_signature.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
 
 // `dir` may be a symlink (state/current): the Catalogue names the directory it resolves to,
-// and holds the databases and meshes it checked.
-Result<Catalogue> validate_catalogue(const std::filesystem::path& dir);
-// The same, giving up between files once `stop` is requested (the watcher's shutdown).
-Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, std::stop_token stop);
+// and holds the databases and meshes it checked. Where `trust` requires it, the manifest's
+// signature and the files' digests are checked first (catalogue_signature.hpp); the digests a
+// manifest gives are checked in any case. Gives up between files once `stop` is requested (the
+// watcher's shutdown).
+Result<Catalogue> validate_catalogue(const std::filesystem::path& dir,
+                                     const CatalogueTrust& trust = {}, std::stop_token stop = {});
 
 }  // namespace gem::kiosk

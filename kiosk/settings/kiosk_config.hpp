@@ -68,8 +68,15 @@ struct CatalogueConfig {
     std::filesystem::path default_dir = "/usr/share/gemkiosk/catalogue";
     std::filesystem::path state_dir = "/var/lib/gemkiosk";        // kiosk's own state
     std::filesystem::path inbox_dir = "/var/lib/gemkiosk/inbox";  // new catalogues land here
-    std::vector<std::filesystem::path> watch_dirs;  // also watched, e.g. a USB stick's mount
+    // Also watched: catalogue packages' folder (gemtables package), a USB stick's mount point.
+    std::vector<std::filesystem::path> watch_dirs = {"/usr/share/gemkiosk/catalogues"};
     double settle_s = 5.0;  // a new catalogue is read once its files stop changing this long
+    // Public keys (minisign's .pub files) a delivered catalogue must be signed with; none:
+    // catalogues are not authenticated (catalogue/catalogue_signature.hpp).
+    std::vector<std::filesystem::path> trusted_keys;
+    // The trusted_keys line was there but wrong: signatures are still required (with no key,
+    // every delivery is refused) rather than dropped by a typo.
+    bool trusted_keys_unreadable = false;
 };
 
 // [designs]: tables for catalogue stones that name a design instead of a database

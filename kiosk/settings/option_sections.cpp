@@ -229,6 +229,10 @@ constexpr KeySpec<CatalogueConfig> kCatalogueKeys[] = {
                       CatalogueConfig& o) { r.paths(n, k, o.watch_dirs); }},
     {"settle_s", [](ConfigReader& r, const Node& n, Key k,
                     CatalogueConfig& o) { r.number(n, k, 0.0, 3600.0, o.settle_s); }},
+    {"trusted_keys",
+     [](ConfigReader& r, const Node& n, Key k, CatalogueConfig& o) {
+         if (!r.paths(n, k, o.trusted_keys)) o.trusted_keys_unreadable = true;
+     }},
 };
 
 constexpr KeySpec<DesignsConfig> kDesignsKeys[] = {

@@ -4,10 +4,12 @@
 # test's own pieces (tests/vm/guest/: the kiosk's config, a root shell on the second serial
 # port for the test to drive the guest through, and the catalogues the test shows).
 #
-#   image.sh --deb gemkiosk_*.deb --catalogues DIR --out DIR
+#   image.sh --deb gemkiosk_*.deb --catalogues DIR --repo DIR --out DIR
 #
 # DIR (catalogues) holds folders: `first` becomes the default catalogue, the others are staged
-# in /srv/vm-test/catalogues for the test to copy into the inbox. Writes OUT/root.img (ext4),
+# in /srv/vm-test/catalogues for the test to copy into the inbox. DIR (repo) is the chain's apt
+# repository, staged in /srv/vm-test/repo; its chain.pub becomes the key the kiosk trusts
+# (/etc/gemkiosk/keys/chain.pub, named by guest/gemkiosk.toml). Writes OUT/root.img (ext4),
 # OUT/vmlinuz and OUT/initrd.img.
 #
 # The Debian part (mmdebstrap, 4 to 6 minutes and about 300 MB of downloads the first time) is
@@ -20,17 +22,18 @@
 set -euo pipefail
 
 here=$(cd "$(dirname "$0")" && pwd)
-deb= catalogues= out=
+deb= catalogues= repo= out=
 while [ $# -gt 0 ]; do
   case $1 in
     --deb) deb=$(realpath "$2"); shift 2 ;;
     --catalogues) catalogues=$(realpath "$2"); shift 2 ;;
+    --repo) repo=$(realpath "$2"); shift 2 ;;
     --out) out=$2; shift 2 ;;
     *) echo "image.sh: unknown argument $1" >&2; exit 2 ;;
   esac
 done
-[ -f "$deb" ] && [ -d "$catalogues/first" ] && [ -n "$out" ] ||
-  { echo "usage: image.sh --deb FILE.deb --catalogues DIR --out DIR" >&2; exit 2; }
+[ -f "$deb" ] && [ -d "$catalogues/first" ] && [ -f "$repo/chain.pub" ] && [ -n "$out" ] ||
+  { echo "usage: image.sh --deb FILE.deb --catalogues DIR --repo DIR --out DIR" >&2; exit 2; }
 
 skip() { echo "image.sh: skipped: $*" >&2; exit 77; }
 [ "$(id -u)" -eq 0 ] || skip "building the guest's disk needs root (chroot, file owners)"
@@ -111,6 +114,9 @@ for dir in "$catalogues"/*/; do
   name=$(basename "$dir")
   [ "$name" = first ] || cp -r "$dir" "$root/srv/vm-test/catalogues/$name"
 done
+# The chain's repository (apt reads it as a file: source) and the catalogues' trusted key.
+cp -r "$repo" "$root/srv/vm-test/repo"
+install -D -m 0644 "$repo/chain.pub" "$root/etc/gemkiosk/keys/chain.pub"
 chmod -R a+rX "$root/srv/vm-test" "$root/usr/share/gemkiosk/catalogue"
 
 # The watchdog's limit for a machine that draws a frame every few seconds, added by a generator

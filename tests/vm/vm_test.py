@@ -5,7 +5,8 @@ devices, systemd starting the packaged service with its user, logind session and
   vm_test.py --build-dir BUILD --source-dir SRC --work-dir DIR --gemkiosk PROGRAM
              --gemtables PROGRAM [--short] [--accel auto|kvm|tcg]
 
-Builds the Debian package (cpack) and two small catalogues (gemtables), makes the guest's disk
+Builds the Debian package (cpack), small catalogues signed with a test chain's minisign key,
+and the chain's apt repository of two catalogue packages (gemtables package, reprepro), makes the guest's disk
 (image.sh), boots it under QEMU and checks, from the host:
   always:  the service reports ready (first frame on screen); the screen shows the stone as the
            kiosk draws it headless on the host from the same config and catalogue; a drag with
@@ -13,9 +14,12 @@ Builds the Debian package (cpack) and two small catalogues (gemtables), makes th
            guest's kernel delivered (evemu-record in the guest);
   not with --short: a catalogue staff copy into the inbox is shown; after SIGKILL systemd
            starts the kiosk again and the screen comes back; a damaged catalogue is refused,
-           the old one stays on screen; under KVM, where the guest runs the shipped unit as it
-           is, a kiosk whose frames stop (SIGSTOP) is restarted by systemd's watchdog; the
-           legacy modesetting path (display.atomic = false) shows the same picture.
+           set aside as NAME.rejected, the old one stays on screen; under KVM, where the guest runs
+           the shipped unit as it is, a kiosk whose frames stop (SIGSTOP) is restarted by
+           systemd's watchdog; the legacy modesetting path (display.atomic = false) shows the
+           same picture; before those two, a catalogue signed with an unknown key is refused,
+           and the chain's signed apt repository (reprepro) installs a catalogue package, which
+           is shown, and then upgrades it.
 Every run ends with a clean stop and prints one "figures:" line: the accelerator, boot to the
 first frame, the frame rate in the guest, the restarts' times and the whole scenario's.
 Exits 0 on success, 1 on a failed check, 77 when this machine cannot run virtual machines or
@@ -49,6 +53,11 @@ NEW_STONE = "tolkowsky-diamond"
 # A catalogue of one design (a stone description, no database), shown with the exact method.
 DESIGN_STONE = "marquise-garnet"
 DESIGN_CATALOGUE = "designs"
+# The chain's catalogue package and what its two versions hold: (catalogue name, design, ring).
+# The melee diamond is too small for the parametric ring's claws: a loose stone.
+CHAIN_PACKAGE = "gemkiosk-catalogue-chain"
+CHAIN_VERSIONS = {1: ("chain-spring", "emerald-cut-emerald", "parametric"),
+                  2: ("chain-summer", "melee-diamond", "none")}
 
 
 class CheckFailed(Exception):
@@ -85,10 +94,23 @@ class Host:
             raise CheckFailed(f"cpack made {len(debs)} packages in {out}")
         return debs[0]
 
-    def catalogues(self):
-        """first: the sapphire the kiosk starts with; diamond: staff's new catalogue. Small
-        databases (64 and 128 px, 10°): the stone is about 100 px tall on this screen. designs:
-        a garnet's stone description only, no tables."""
+    def keys(self):
+        """The chain's minisign key, which the guest's kiosk trusts, and a stranger's."""
+        keys = os.path.join(self.work, "keys")
+        os.makedirs(keys, exist_ok=True)
+        for name in ("chain", "stranger"):
+            run(["minisign", "-G", "-W", "-f", "-p", os.path.join(keys, name + ".pub"),
+                 "-s", os.path.join(keys, name + ".key")])
+        return keys
+
+    def seal(self, directory, key):
+        run([self.gemtables, "seal", directory, "--sign", key])
+
+    def catalogues(self, keys):
+        """first: the sapphire the kiosk starts with (the shipped default, not signed);
+        diamond: staff's new catalogue. Small databases (64 and 128 px, 10°): the stone is
+        about 100 px tall on this screen. designs: a garnet's stone description only, no
+        tables. Both signed with the chain's key; stranger: the designs signed with another."""
         root = os.path.join(self.work, "catalogues")
         for folder, stone in (("first", FIRST_STONE), ("diamond", NEW_STONE)):
             directory = os.path.join(root, folder)
@@ -109,7 +131,68 @@ class Host:
             f.write(f'[catalogue]\nname = "{DESIGN_CATALOGUE}"\n\n[[stone]]\n'
                     f'name = "{DESIGN_STONE}"\ndesign = "{DESIGN_STONE}.toml"\n'
                     f'ring = "parametric"\n')
+        stranger = os.path.join(root, "stranger")
+        shutil.rmtree(stranger, ignore_errors=True)
+        shutil.copytree(designs, stranger)
+        for directory in (os.path.join(root, "diamond"), designs):
+            self.seal(directory, os.path.join(keys, "chain.key"))
+        self.seal(stranger, os.path.join(keys, "stranger.key"))
         return root
+
+    def chain_catalogue(self, version):
+        """The catalogue of the chain's package version 1 or 2: one design each."""
+        name, stone, ring = CHAIN_VERSIONS[version]
+        directory = os.path.join(self.work, "chain", str(version))
+        shutil.rmtree(directory, ignore_errors=True)
+        os.makedirs(directory)
+        shutil.copy(os.path.join(self.args.source_dir, "config", "stones", stone + ".toml"),
+                    directory)
+        with open(os.path.join(directory, "catalogue.toml"), "w") as f:
+            f.write(f'[catalogue]\nname = "{name}"\n\n[[stone]]\nname = "{stone}"\n'
+                    f'design = "{stone}.toml"\nring = "{ring}"\n')
+        return directory
+
+    def repository(self, keys):
+        """The chain's apt repository as reprepro makes it, signed with a GnuPG key of its
+        own, in two states: v1 publishes version 1 of the catalogue package, v2 version 2.
+        Returns the folder for the guest: v1/, v2/ (dists and pool), chain-archive.gpg (the
+        repository's public key) and chain.pub (the catalogues' key)."""
+        out = os.path.join(self.work, "repo")
+        shutil.rmtree(out, ignore_errors=True)
+        gnupg = os.path.join(self.work, "gnupg")
+        shutil.rmtree(gnupg, ignore_errors=True)
+        os.makedirs(gnupg, mode=0o700)
+        env = dict(os.environ, GNUPGHOME=gnupg)
+        run(["gpg", "--batch", "--passphrase", "", "--quick-gen-key",
+             "gemkiosk test chain <chain@example.org>", "ed25519", "sign", "never"], env=env)
+        listing = run(["gpg", "--batch", "--with-colons", "--list-keys"], env=env).stdout
+        fingerprint = next(line.split(":")[9] for line in listing.splitlines()
+                           if line.startswith("fpr:"))
+        debs = os.path.join(self.work, "chain-debs")
+        shutil.rmtree(debs, ignore_errors=True)
+        os.makedirs(debs)
+        build = os.path.join(self.work, "reprepro")
+        shutil.rmtree(build, ignore_errors=True)
+        os.makedirs(os.path.join(build, "conf"))
+        with open(os.path.join(build, "conf", "distributions"), "w") as f:
+            f.write("Origin: gemkiosk-test-chain\nLabel: gemkiosk-test-chain\n"
+                    "Codename: bookworm\nArchitectures: amd64\nComponents: main\n"
+                    f"Description: the test chain's catalogues\nSignWith: {fingerprint}\n")
+        for version in (1, 2):
+            catalogue = self.chain_catalogue(version)
+            self.seal(catalogue, os.path.join(keys, "chain.key"))
+            run([self.gemtables, "package", catalogue, "--version", str(version),
+                 "--package", CHAIN_PACKAGE, "-o", debs])
+            deb = os.path.join(debs, f"{CHAIN_PACKAGE}_{version}_all.deb")
+            run(["reprepro", "-b", build, "includedeb", "bookworm", deb], env=env)
+            for part in ("dists", "pool"):
+                shutil.copytree(os.path.join(build, part), os.path.join(out, f"v{version}", part))
+        with open(os.path.join(out, "chain-archive.gpg"), "wb") as f:
+            f.write(subprocess.run(["gpg", "--batch", "--export", fingerprint], env=env,
+                                   check=True, stdout=subprocess.PIPE).stdout)
+        subprocess.run(["gpgconf", "--kill", "gpg-agent"], env=env, check=False)
+        shutil.copy(os.path.join(keys, "chain.pub"), out)
+        return out
 
     def picture(self, name, catalogue, replay=None):
         """The guest's config drawn headless on the host: the start view, or the view a replay
@@ -350,9 +433,6 @@ def watchdog(args, guest, choice, figures, expected, others):
 def legacy(guest, figures, expected, others):
     """display.atomic = false: the kiosk sets its mode and flips with the legacy calls, and the
     screen shows the same picture. The atomic kiosk's frame summary comes with its stop."""
-    # Staff take the damaged copy out of the inbox first: a kiosk starting with it there
-    # rightly warns about it again.
-    guest.shell.run("rm -rf /var/lib/gemkiosk/inbox/summer")
     since = guest.shell.run("date +%s").strip()
     guest.shell.run("sed -i 's/^atomic = true$/atomic = false/' /etc/gemkiosk/gemkiosk.toml && "
                     "grep -qx 'atomic = false' /etc/gemkiosk/gemkiosk.toml")
@@ -478,8 +558,15 @@ def scenario(args, host, guest, catalogues, figures, choice):
         "chmod -R a+rX /tmp/bad && runuser -u clerk -- cp -r /tmp/bad /var/lib/gemkiosk/inbox/summer")
     line = guest.wait_for_log("rejected", timeout_s=180)
     log(f"the kiosk says: {line}")
-    if NEW_STONE + ".gemdb" not in line or "checksum" not in line:
+    # The signed digest finds the flipped byte before the database's own checksums would.
+    if NEW_STONE + ".gemdb" not in line or "SHA-256" not in line:
         raise CheckFailed(f"the refusal does not name the database and the fault: {line}")
+    # The clerk's copy is theirs (the kiosk may not write into it), so it is renamed where it is.
+    note = guest.shell.run("cat /var/lib/gemkiosk/inbox/summer.rejected.txt", check=False)
+    if NEW_STONE + ".gemdb" not in note or guest.shell.run(
+            "test -e /var/lib/gemkiosk/inbox/summer && echo left || echo moved").strip() != "moved":
+        raise CheckFailed("the refused catalogue was not set aside with its reason:\n" + note)
+    log("set aside as /var/lib/gemkiosk/inbox/summer.rejected, the reason beside it")
     # The screen keeps the diamond over several frames after the refusal.
     for look in range(3):
         time.sleep(5)
@@ -491,8 +578,13 @@ def scenario(args, host, guest, catalogues, figures, choice):
                            {"the diamond": diamond_start, "the sapphire": sapphire_start})
     others = {"the diamond": diamond_start, "the sapphire": sapphire_start}
 
-    # Frames stop; under KVM the shipped watchdog restarts the kiosk, on the designs.
-    made = 1 + watchdog(args, guest, choice, figures, design_start, others)
+    # The chain's delivery: a stranger's signature refused, its apt repository's package
+    # installed and upgraded. The upgrade's catalogue stays on screen for the steps after.
+    chain_start = apt_delivery(host, guest, figures, design_start, others)
+    others = {**others, "the garnet": design_start}
+
+    # Frames stop; under KVM the shipped watchdog restarts the kiosk, on the chain's catalogue.
+    made = 1 + watchdog(args, guest, choice, figures, chain_start, others)
     # Every restart so far is one the test caused: none from a watchdog on a working kiosk.
     # (StartLimitBurst=5 in 10 minutes: boot, SIGKILL, watchdog and the legacy step make 4.)
     restarts, = guest.unit("NRestarts")
@@ -501,7 +593,61 @@ def scenario(args, host, guest, catalogues, figures, choice):
                           guest.shell.run("journalctl -u gemkiosk.service -b -o cat --no-pager",
                                           check=False))
 
-    legacy(guest, figures, design_start, others)
+    legacy(guest, figures, chain_start, others)
+
+
+def apt_delivery(host, guest, figures, expected, others):
+    """A chain's delivery: a catalogue signed with a key the kiosk does not trust, copied in by
+    the clerk, is refused with its line and moved aside; the chain's signed apt repository (a
+    file: source, as a mirror would be) installs its catalogue package, which the kiosk shows,
+    and then upgrades it. Figures: seconds from `apt-get install` to the kiosk's line and to
+    the stone on screen. Returns the host's picture of the upgrade's catalogue."""
+    since = guest.shell.run("date +%s").strip()
+    guest.shell.run("runuser -u clerk -- cp -r /srv/vm-test/catalogues/stranger "
+                    "/var/lib/gemkiosk/inbox/stranger")
+    line = guest.wait_for_log("rejected", timeout_s=180, since=since)
+    log(f"the kiosk says: {line}")
+    if "which is not trusted" not in line or "set aside as" not in line:
+        raise CheckFailed(f"the stranger's catalogue was not refused for its key: {line}")
+    for look in range(2):
+        time.sleep(3)
+        compare(f"stranger-refused-{look + 1}", guest.screenshot("stranger"), expected, others,
+                guest.work)
+
+    guest.shell.run(
+        "install -D -m 0644 /srv/vm-test/repo/chain-archive.gpg /etc/apt/keyrings/chain.gpg && "
+        "ln -sfn /srv/vm-test/repo/v1 /srv/chain-repo && "
+        "echo 'deb [signed-by=/etc/apt/keyrings/chain.gpg] file:/srv/chain-repo bookworm main' "
+        "> /etc/apt/sources.list.d/chain.list")
+    # Only the chain's source: the guest has no network to reach Debian's mirror.
+    update = ("apt-get update -q -o Dir::Etc::SourceList=/etc/apt/sources.list.d/chain.list "
+              "-o Dir::Etc::SourceParts=- -o APT::Get::List-Cleanup=0")
+    shown = expected
+    for version, (name, stone, _) in CHAIN_VERSIONS.items():
+        guest.shell.run(f"ln -sfn /srv/vm-test/repo/v{version} /srv/chain-repo && {update}",
+                        timeout_s=300)
+        since = guest.shell.run("date +%s").strip()
+        started = float(guest.shell.run("cat /proc/uptime").split()[0])
+        out = guest.shell.run(f"DEBIAN_FRONTEND=noninteractive apt-get install -y -q "
+                              f"{CHAIN_PACKAGE} 2>&1", timeout_s=300)
+        log(f"apt-get install {CHAIN_PACKAGE} (version {version}): " +
+            " | ".join(l for l in out.splitlines() if l.startswith(("Unpacking", "Setting up"))))
+        line = guest.wait_for_log(f"showing catalogue '{name}'", timeout_s=180, since=since)
+        logged = float(guest.shell.run("cat /proc/uptime").split()[0]) - started
+        log(f"the kiosk says: {line}")
+        if "signed by key" not in line:
+            raise CheckFailed(f"the kiosk does not say the package's catalogue was signed: {line}")
+        picture = host.picture(f"chain-{version}", host.chain_catalogue(version))
+        guest.wait_for_picture(f"apt-version-{version}", picture, {**others, "before": shown},
+                               timeout_s=300)
+        on_screen = float(guest.shell.run("cat /proc/uptime").split()[0]) - started
+        figures[f"apt_v{version}_to_log_s"] = logged
+        figures[f"apt_v{version}_on_screen_s"] = on_screen
+        log(f"{stone} on screen {on_screen:.1f} s after apt-get install began (the kiosk's "
+            f"line within {logged:.1f} s)")
+        no_warnings(guest, since, f"installing version {version} of the catalogue package")
+        shown = picture
+    return shown
 
 
 def designs(host, guest, catalogues, figures, others):
@@ -570,10 +716,12 @@ def main():
     host = Host(args)
     log("building the package and the catalogues")
     deb = host.package()
-    catalogues = host.catalogues()
+    keys = host.keys()
+    catalogues = host.catalogues(keys)
+    repository = host.repository(keys)
     image = os.path.join(args.work_dir, "image")
     made = subprocess.run([os.path.join(HERE, "image.sh"), "--deb", deb, "--catalogues",
-                           catalogues, "--out", image])
+                           catalogues, "--repo", repository, "--out", image])
     if made.returncode == SKIP:
         return SKIP
     if made.returncode != 0:

@@ -136,10 +136,10 @@ TEST(CatalogueStore, PruneKeepsCurrentAndPrevious) {
 
 TEST(CatalogueStore, RemembersInstalledSources) {
     const fs::path state = fresh_dir("store-sources");
-    EXPECT_TRUE(read_installed_sources(state).empty());
-    ASSERT_TRUE(remember_installed_source(state, 0x0123456789abcdefull).ok());
-    ASSERT_TRUE(remember_installed_source(state, 42).ok());
-    EXPECT_EQ(read_installed_sources(state),
+    EXPECT_TRUE(read_sources(state, kInstalledSources).empty());
+    ASSERT_TRUE(remember_source(state, kInstalledSources, 0x0123456789abcdefull).ok());
+    ASSERT_TRUE(remember_source(state, kInstalledSources, 42).ok());
+    EXPECT_EQ(read_sources(state, kInstalledSources),
               (std::vector<std::uint64_t>{0x0123456789abcdefull, 42}));
 }
 

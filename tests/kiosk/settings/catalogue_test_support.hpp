@@ -22,6 +22,9 @@ const std::filesystem::path& tiny_database();
 std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path);
 void write_bytes(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);
 void write_text(const std::filesystem::path& path, const std::string& text);
+std::string read_text(const std::filesystem::path& path);
+// Runs a shell command; its stdout and stderr together, and its exit status in `status`.
+std::string run_command(const std::string& command, int* status = nullptr);
 
 // A catalogue named `name` with one stone "Round" whose database is a copy of tiny_database()
 // at stones/round.gemdb (the manifest is written first, then the database).

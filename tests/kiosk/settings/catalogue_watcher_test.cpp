@@ -1,7 +1,8 @@
 // The inbox watcher end to end, on real directories with a real inotify, eventfd and thread:
 // a good catalogue is installed and handed over, a damaged or half-copied one never becomes
-// current, a rejected one is not validated again until it changes, a copy that fails on a
-// full disk leaves the current one, and old copies are removed.
+// current and is set aside in the inbox as NAME.rejected, one that cannot be (a stick) is not
+// validated again until it changes, nor is a package's folder dpkg is unpacking looked at, a
+// copy that fails on a full disk leaves the current one, and old copies are removed.
 
 #include <gtest/gtest.h>
 #include <poll.h>
@@ -148,33 +149,78 @@ TEST(CatalogueWatcher, DamagedDatabasesAreRejectedAndTheCurrentStays) {
     EXPECT_EQ(w->counters().installs, 1u);
 }
 
+// A catalogue on a stick cannot be set aside: it is refused once, remembered by fingerprint,
+// not validated again by a rescan nor after a restart, and looked at again once it changes.
 TEST(CatalogueWatcher, UnchangedRejectedDirectoryIsNotValidatedAgain) {
     const fs::path root = fresh_dir("watch-remember");
-    const CatalogueOptions o = options_for(root, 300ms);
-    auto w = start(o);
+    CatalogueOptions o = options_for(root, 300ms);
+    o.extra_dirs = {root / "stick"};
     std::uint32_t view = 0;
     const std::vector<std::uint8_t> damaged = damaged_database(&view);
-    write_text(o.inbox_dir / "autumn" / "catalogue.toml", one_stone_manifest("autumn"));
-    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", damaged);
-    ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
-    EXPECT_EQ(w->counters().validations, 1u);
-    // Each rescan is a full pass over the inbox (SIGHUP); the directory is unchanged.
-    for (int i = 0; i < 3; ++i) {
+    write_text(root / "stick" / "autumn" / "catalogue.toml", one_stone_manifest("autumn"));
+    write_bytes(root / "stick" / "autumn" / "stones" / "round.gemdb", damaged);
+    {
+        StderrCapture capture;
+        auto w = start(o);
+        ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
+        EXPECT_EQ(w->counters().validations, 1u);
+        // Each rescan is a full pass over the inbox (SIGHUP); the directory is unchanged.
+        for (int i = 0; i < 3; ++i) {
+            const auto scans = w->counters().scans;
+            w->rescan();
+            ASSERT_TRUE(wait_until([&] { return w->counters().scans > scans; }));
+        }
+        EXPECT_EQ(w->counters().validations, 1u);
+        EXPECT_EQ(w->counters().rejections, 1u);
+        EXPECT_NE(
+            capture.text().find("checksum mismatch (from " + (root / "stick" / "autumn").string() +
+                                "); not reported again until it changes"),
+            std::string::npos)
+            << capture.text();
+        EXPECT_TRUE(fs::exists(root / "stick" / "autumn" / "catalogue.toml"))
+            << "a stick's catalogue stays as it is";
+    }
+    {
+        // A restart (a power cut, an update) does not report it again.
+        StderrCapture capture;
+        auto w = start(o);
         const auto scans = w->counters().scans;
         w->rescan();
         ASSERT_TRUE(wait_until([&] { return w->counters().scans > scans; }));
+        EXPECT_EQ(w->counters().validations, 0u);
+        EXPECT_EQ(capture.text().find("rejected"), std::string::npos) << capture.text();
+        // Staff replace the damaged file: that is a change, so it is looked at again.
+        write_bytes(root / "stick" / "autumn" / "stones" / "round.gemdb",
+                    read_bytes(tiny_database()));
+        ASSERT_TRUE(wait_until([&] { return w->counters().installs == 1; }));
+        EXPECT_EQ(w->counters().validations, 1u);
+        EXPECT_EQ(w->take_switch()->name, "autumn");
     }
-    EXPECT_EQ(w->counters().validations, 1u);
-    EXPECT_EQ(w->counters().rejections, 1u);
-    // Staff replace the damaged file: that is a change, so it is looked at again.
-    write_bytes(o.inbox_dir / "autumn" / "stones" / "round.gemdb", read_bytes(tiny_database()));
-    ASSERT_TRUE(wait_until([&] { return w->counters().installs == 1; }));
-    EXPECT_EQ(w->counters().validations, 2u);
-    EXPECT_EQ(w->take_switch()->name, "autumn");
 }
 
-// Staff copy the manifest, then (after longer than the settle time) a partial database, then
-// the rest: each incomplete state is refused, and only the complete one becomes current.
+// A catalogue package's folder while dpkg unpacks it (a file still under its *.dpkg-new name,
+// as after a power cut mid-upgrade) is not looked at however long it stays so: no refusal,
+// nothing installed. Once the file has its name, it is installed.
+TEST(CatalogueWatcher, AFolderDpkgIsUnpackingIsNotLookedAt) {
+    const fs::path root = fresh_dir("watch-dpkg");
+    CatalogueOptions o = options_for(root, 200ms);
+    o.extra_dirs = {root / "packages"};
+    const fs::path dir = root / "packages" / "gemkiosk-catalogue-spring";
+    write_text(dir / "catalogue.toml", one_stone_manifest("spring"));
+    write_bytes(dir / "stones" / "round.gemdb.dpkg-new", read_bytes(tiny_database()));
+    auto w = start(o);
+    std::this_thread::sleep_for(1500ms);
+    EXPECT_EQ(w->counters().validations, 0u);
+    EXPECT_EQ(w->counters().rejections, 0u);
+    fs::rename(dir / "stones" / "round.gemdb.dpkg-new", dir / "stones" / "round.gemdb");
+    ASSERT_TRUE(wait_until([&] { return w->counters().installs == 1; }));
+    EXPECT_EQ(w->counters().rejections, 0u);
+    EXPECT_EQ(w->take_switch()->name, "spring");
+}
+
+// Staff copy only the manifest and leave it for longer than the settle time: the catalogue is
+// refused, set aside in the inbox as spring.rejected with a note saying why, never current;
+// copied again whole, it is installed.
 TEST(CatalogueWatcher, HalfCopiedCatalogueIsNeverCurrent) {
     const fs::path root = fresh_dir("watch-half-slow");
     const CatalogueOptions o = options_for(root, 300ms);
@@ -182,24 +228,34 @@ TEST(CatalogueWatcher, HalfCopiedCatalogueIsNeverCurrent) {
     StderrCapture capture;
     write_text(o.inbox_dir / "spring" / "catalogue.toml", one_stone_manifest("spring"));
     ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
-    EXPECT_NE(capture.text().find(
-                  "catalogue 'spring' rejected: stones/round.gemdb: cannot open: No such file"),
+    const std::string why =
+        "catalogue 'spring' rejected: stones/round.gemdb: cannot open: No such file";
+    EXPECT_NE(capture.text().find(why), std::string::npos) << capture.text();
+    EXPECT_NE(capture.text().find("; set aside as " + (o.inbox_dir / "spring.rejected").string()),
               std::string::npos)
         << capture.text();
-    auto bytes = read_bytes(tiny_database());
-    write_bytes(o.inbox_dir / "spring" / "stones" / "round.gemdb",
-                std::vector<std::uint8_t>(bytes.begin(), bytes.begin() + bytes.size() / 2));
-    ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 2; }));
-    EXPECT_NE(capture.text().find("catalogue 'spring' rejected: stones/round.gemdb: truncated"),
-              std::string::npos)
-        << capture.text();
+    EXPECT_FALSE(fs::exists(o.inbox_dir / "spring"));
+    EXPECT_TRUE(fs::exists(o.inbox_dir / "spring.rejected" / "catalogue.toml"));
+    EXPECT_NE(read_text(o.inbox_dir / "spring.rejected.txt").find(why), std::string::npos);
     EXPECT_FALSE(fs::exists(o.state_dir / "current"));
     EXPECT_FALSE(w->take_switch().has_value());
-    write_bytes(o.inbox_dir / "spring" / "stones" / "round.gemdb", bytes);
+
+    // A second refusal of the same name does not overwrite the first one's note, and neither
+    // set-aside folder is looked at again.
+    write_text(o.inbox_dir / "spring" / "catalogue.toml", one_stone_manifest("spring"));
+    ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 2; }));
+    EXPECT_TRUE(fs::exists(o.inbox_dir / "spring-2.rejected.txt"));
+    EXPECT_TRUE(fs::exists(o.inbox_dir / "spring.rejected.txt"));
+    const auto scans = w->counters().scans;
+    w->rescan();
+    ASSERT_TRUE(wait_until([&] { return w->counters().scans > scans; }));
+    EXPECT_EQ(w->counters().validations, 2u);
+
+    write_catalogue(o.inbox_dir / "spring", "spring");
     ASSERT_TRUE(switch_signalled(*w));
     auto taken = w->take_switch();
     ASSERT_TRUE(taken.has_value());
-    EXPECT_EQ(read_bytes(taken->directory / "stones" / "round.gemdb"), bytes);
+    EXPECT_EQ(read_bytes(taken->directory / "stones" / "round.gemdb"), read_bytes(tiny_database()));
 }
 
 // The same copy with every pause shorter than the settle time: the watcher waits for the

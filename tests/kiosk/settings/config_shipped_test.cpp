@@ -96,9 +96,9 @@ TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
     // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
-    // 12, attract 6, render 7, picture 8, catalogue 5, designs 8, snapshot 2, background 5,
+    // 12, attract 6, render 7, picture 8, catalogue 6, designs 8, snapshot 2, background 5,
     // lighting 4, lighting.light 3.
-    EXPECT_EQ(known.size(), 76u);
+    EXPECT_EQ(known.size(), 77u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -186,6 +186,7 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(s.catalogue.inbox_dir, d.catalogue.inbox_dir);
     EXPECT_EQ(s.catalogue.watch_dirs, d.catalogue.watch_dirs);
     EXPECT_EQ(s.catalogue.settle_s, d.catalogue.settle_s);
+    EXPECT_EQ(s.catalogue.trusted_keys, d.catalogue.trusted_keys);
     EXPECT_EQ(s.designs.tables, d.designs.tables);
     EXPECT_EQ(s.designs.builder, d.designs.builder);
     EXPECT_EQ(s.designs.level_px, d.designs.level_px);
