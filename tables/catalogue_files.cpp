@@ -30,7 +30,7 @@ std::string hex(const unsigned char* bytes, std::size_t size) {
 }
 
 constexpr const char* kDigestComment =
-    "# Every other file of the catalogue and its SHA-256 (written by gemtables).";
+    "# Every other file of the catalogue and its digest (written by gemtables).";
 
 }  // namespace
 
@@ -73,13 +73,13 @@ Result<std::vector<std::string>> catalogue_payload(const fs::path& dir) {
     return files;
 }
 
-Result<std::string> sha256_file(const fs::path& path) {
+Result<std::string> file_digest(const fs::path& path) {
     if (sodium_init() < 0) return Error{"libsodium cannot start"};
     const int fd = ::open(path.c_str(), O_RDONLY | O_CLOEXEC);
     if (fd < 0) return Error{path.string() + ": " + std::strerror(errno)};
     ::posix_fadvise(fd, 0, 0, POSIX_FADV_SEQUENTIAL);
-    crypto_hash_sha256_state state;
-    crypto_hash_sha256_init(&state);
+    crypto_generichash_state state;
+    crypto_generichash_init(&state, nullptr, 0, kDigestBytes);
     std::vector<unsigned char> buffer(1 << 20);
     for (;;) {
         const ssize_t got = ::read(fd, buffer.data(), buffer.size());
@@ -90,11 +90,11 @@ Result<std::string> sha256_file(const fs::path& path) {
             return Error{path.string() + ": " + std::strerror(err)};
         }
         if (got == 0) break;
-        crypto_hash_sha256_update(&state, buffer.data(), static_cast<unsigned long long>(got));
+        crypto_generichash_update(&state, buffer.data(), static_cast<unsigned long long>(got));
     }
     ::close(fd);
-    unsigned char digest[crypto_hash_sha256_BYTES];
-    crypto_hash_sha256_final(&state, digest);
+    unsigned char digest[kDigestBytes];
+    crypto_generichash_final(&state, digest, sizeof digest);
     return hex(digest, sizeof digest);
 }
 
@@ -103,7 +103,7 @@ Result<std::string> digest_table(const fs::path& dir) {
     if (!files) return Error{files.error()};
     std::string table = std::string(kDigestTable) + "\n";
     for (const std::string& name : files.value()) {
-        Result<std::string> digest = sha256_file(dir / name);
+        Result<std::string> digest = file_digest(dir / name);
         if (!digest) return Error{digest.error()};
         table += toml_string(name) + " = \"" + digest.value() + "\"\n";
     }
@@ -160,15 +160,15 @@ Result<bool> check_catalogue_digests(const fs::path& dir,
     for (const std::string& name : files.value()) {
         if (digests.count(name) == 0) {
             return Error{name +
-                         ": not named in the manifest's [sha256] table (added after "
+                         ": not named in the manifest's [blake2b] table (added after "
                          "signing, or left over from an interrupted installation)"};
         }
     }
     for (const auto& [name, expected] : digests) {
         if (!std::binary_search(files.value().begin(), files.value().end(), name)) {
-            return Error{name + ": missing (the manifest's [sha256] table names it)"};
+            return Error{name + ": missing (the manifest's [blake2b] table names it)"};
         }
-        Result<std::string> digest = sha256_file(dir / name);
+        Result<std::string> digest = file_digest(dir / name);
         if (!digest) {
             // Staff know the catalogue's own names: the error without the absolute path.
             const std::string absolute = (dir / name).string() + ": ";
@@ -178,7 +178,7 @@ Result<bool> check_catalogue_digests(const fs::path& dir,
         }
         if (digest.value() != expected) {
             return Error{name +
-                         ": does not match its SHA-256 in the manifest (changed or "
+                         ": does not match its digest in the manifest (changed or "
                          "damaged since the catalogue was made)"};
         }
     }

@@ -42,7 +42,7 @@ struct PackageOptions {
     std::string maintainer = "gemkiosk catalogue <root@localhost>";
 };
 
-// gemtables seal: writes the manifest's [sha256] table, then signs it with minisign when a
+// gemtables seal: writes the manifest's [blake2b] table, then signs it with minisign when a
 // secret key is given.
 struct SealOptions {
     std::string catalogue_dir;

@@ -124,7 +124,8 @@ int main(int argc, char** argv) {
 
     SealOptions seal;
     CLI::App* s = app.add_subcommand(
-        "seal", "name every file of a catalogue with its SHA-256 in the manifest, and sign it");
+        "seal",
+        "name every file of a catalogue with its BLAKE2b digest in the manifest, and sign it");
     s->add_option("catalogue", seal.catalogue_dir, "catalogue folder")->required();
     s->add_option("--sign", seal.secret_key, "minisign secret key file to sign the manifest with");
 

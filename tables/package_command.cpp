@@ -98,7 +98,7 @@ int run_package(const PackageOptions& o) {
     try {
         const toml::table manifest = toml::parse_file((dir / kManifestName).string());
         name = manifest["catalogue"]["name"].value_or(std::string());
-        if (const toml::table* table = manifest["sha256"].as_table()) {
+        if (const toml::table* table = manifest["blake2b"].as_table()) {
             for (auto&& [file, digest] : *table) {
                 digests[std::string(file.str())] = digest.value_or(std::string());
             }
@@ -120,7 +120,7 @@ int run_package(const PackageOptions& o) {
     // digests right (a signature, if any, is the kiosk's to check against its keys).
     if (digests.empty()) {
         return fail((dir / kManifestName).string() +
-                    ": names no file's SHA-256: run gemtables seal first");
+                    ": names no file's digest: run gemtables seal first");
     }
     if (Result<bool> whole = check_catalogue_digests(dir, digests); !whole) {
         return fail(dir.string() + ": " + whole.error() + " (gemtables seal writes them anew)");

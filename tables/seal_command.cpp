@@ -1,4 +1,4 @@
-// gemtables seal: a catalogue's manifest names every other file with its SHA-256
+// gemtables seal: a catalogue's manifest names every other file with its BLAKE2b digest
 // (catalogue_files.hpp), and is signed with the chain's minisign key, so that a kiosk that
 // trusts the key shows exactly these files. Signing runs the minisign tool itself: a chain
 // keeps its secret key where minisign keeps it, encrypted with a password that minisign asks
@@ -34,8 +34,8 @@ int run_seal(const SealOptions& o) {
     const fs::path dir(o.catalogue_dir);
     Result<std::size_t> named = write_digests(dir);
     if (!named) return fail(named.error());
-    std::printf("gemtables: %s names %zu file%s with its SHA-256\n", (dir / kManifestName).c_str(),
-                named.value(), named.value() == 1 ? "" : "s");
+    std::printf("gemtables: %s names %zu file%s with its BLAKE2b digest\n",
+                (dir / kManifestName).c_str(), named.value(), named.value() == 1 ? "" : "s");
     const fs::path signature = dir / kSignatureName;
     std::error_code ec;
     if (o.secret_key.empty()) {

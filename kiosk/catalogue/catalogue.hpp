@@ -81,7 +81,7 @@ struct Catalogue {
     // What validation found worth saying of the stones kept: how a glTF piece's stones were
     // recognised and what they are made of, a line each.
     std::vector<std::string> notes;
-    // The manifest's [sha256] table: every other file (relative) and its SHA-256 in hex.
+    // The manifest's [blake2b] table: every other file (relative) and its digest in hex.
     std::map<std::string, std::string> digests;
     // The key that signed the manifest, as minisign prints its id; empty when unsigned.
     std::string signed_by;

@@ -1,7 +1,7 @@
 #pragma once
 // Who made a catalogue, and that it is whole. Where the kiosk's config lists trusted keys, a
 // catalogue's manifest must carry a minisign signature by one of them beside it
-// (catalogue.toml.minisig), and the manifest's [sha256] table must name every other file of
+// (catalogue.toml.minisig), and the manifest's [blake2b] table must name every other file of
 // the directory with its digest. Both are checked before any other file is parsed
 // (validate.hpp), so a stranger's file never reaches the kiosk's readers. Digests a manifest
 // gives are checked even without keys: they also find a file damaged or half written.

@@ -156,22 +156,23 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
     return std::nullopt;
 }
 
-// [sha256]: "relative/file" = "<64 lowercase hex digits>" (tables/catalogue_files.hpp).
+// [blake2b]: "relative/file" = "<128 lowercase hex digits>" (tables/catalogue_files.hpp).
 Problem read_digests(const toml::node& node, std::map<std::string, std::string>& out) {
     const toml::table* t = node.as_table();
-    if (t == nullptr) return error_at(node, "sha256", "expected a table [sha256]");
+    if (t == nullptr) return error_at(node, "blake2b", "expected a table [blake2b]");
     for (auto&& [key, value] : *t) {
         const std::string name(key.str());
-        const std::string full = "sha256.\"" + name + "\"";
+        const std::string full = "blake2b.\"" + name + "\"";
         if (!tables::is_catalogue_file_name(name)) {
             return error_at(key.source().begin.line, full,
                             "must name a file inside the catalogue directory");
         }
         const std::optional<std::string> digest = value.value<std::string>();
-        const bool hex = digest && digest->size() == 64 &&
+        const bool hex = digest && digest->size() == 128 &&
                          digest->find_first_not_of("0123456789abcdef") == std::string::npos;
         if (!value.is_string() || !hex) {
-            return error_at(value, full, "expected a SHA-256 digest (64 lowercase hex digits)");
+            return error_at(value, full,
+                            "expected a BLAKE2b-512 digest (128 lowercase hex digits)");
         }
         out[name] = *digest;
     }
@@ -236,7 +237,7 @@ Result<Catalogue> parse_manifest(std::string_view text, const std::filesystem::p
                 }
                 catalogue.stones.push_back(std::move(stone));
             }
-        } else if (k == "sha256") {
+        } else if (k == "blake2b") {
             if (auto e = read_digests(node, catalogue.digests)) return *e;
         } else {
             return error_at(key.source().begin.line, k, "unknown key");

@@ -21,8 +21,8 @@
 //   background = "velvet"                # optional preset names
 //   lighting = "shop-window"
 //
-//   [sha256]                             # optional, required where trusted keys are listed:
-//   "stones/sapphire.gemdb" = "9f86..."  # every other file and its SHA-256, written by gemtables
+//   [blake2b]                             # optional, required where trusted keys are listed:
+//   "stones/sapphire.gemdb" = "9f86..."  # every other file and its digest, written by gemtables
 //                                        # (tables/catalogue_files.hpp); the last table
 //
 // Unknown keys are errors. Every error names the file, the line and the key, as the stone

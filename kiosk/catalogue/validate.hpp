@@ -19,7 +19,13 @@ namespace gem::kiosk {
 // signature and the files' digests are checked first (catalogue_signature.hpp); the digests a
 // manifest gives are checked in any case. Gives up between files once `stop` is requested (the
 // watcher's shutdown).
+// Whether the files' digests are checked: always for a delivery. The kiosk's own installed copy
+// is not hashed again at start: it was checked when it was installed, it lies where only the
+// kiosk writes, and its databases' own checksums (checked still) find damage; so a restart
+// does not hash a whole catalogue before its first frame.
+enum class DigestCheck { check, skip };
 Result<Catalogue> validate_catalogue(const std::filesystem::path& dir,
-                                     const CatalogueTrust& trust = {}, std::stop_token stop = {});
+                                     const CatalogueTrust& trust = {}, std::stop_token stop = {},
+                                     DigestCheck digests = DigestCheck::check);
 
 }  // namespace gem::kiosk

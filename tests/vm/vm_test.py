@@ -559,7 +559,7 @@ def scenario(args, host, guest, catalogues, figures, choice):
     line = guest.wait_for_log("rejected", timeout_s=180)
     log(f"the kiosk says: {line}")
     # The signed digest finds the flipped byte before the database's own checksums would.
-    if NEW_STONE + ".gemdb" not in line or "SHA-256" not in line:
+    if NEW_STONE + ".gemdb" not in line or "digest" not in line:
         raise CheckFailed(f"the refusal does not name the database and the fault: {line}")
     # The clerk's copy is theirs (the kiosk may not write into it), so it is renamed where it is.
     note = guest.shell.run("cat /var/lib/gemkiosk/inbox/summer.rejected.txt", check=False)

@@ -1,6 +1,6 @@
 // Signed catalogues against the minisign tool itself: keys and signatures are made by
 // `minisign` (the chain's tool, an implementation independent of the kiosk's check), digests
-// are compared with sha256sum(1). A good signature (minisign's default prehashed and its
+// are compared with b2sum(1). A good signature (minisign's default prehashed and its
 // legacy form) is accepted; a wrong key, a changed, missing or added file, a truncated
 // signature, a signature over another manifest and a changed trusted comment are refused,
 // each with its own reason, and nothing of a refused catalogue is parsed.
@@ -131,12 +131,12 @@ TEST(MinisignFixture, AKeyIdIsPrintedAsMinisignPrintsIt) {
     EXPECT_EQ(key_id_text({0, 0, 0, 0, 0, 0, 0, 0}), "0");
 }
 
-TEST_F(SignedCatalogue, TheDigestsAreTheFilesSha256) {
+TEST_F(SignedCatalogue, TheDigestsAreTheFilesBlake2b) {
     const fs::path dir = signed_catalogue("digests", *chain_);
     const std::string expected =
-        run_command("cd '" + dir.string() + "' && sha256sum stones/round.gemdb").substr(0, 64);
+        run_command("cd '" + dir.string() + "' && b2sum stones/round.gemdb").substr(0, 128);
     const std::string manifest = read_text(dir / "catalogue.toml");
-    EXPECT_NE(manifest.find("[sha256]\n\"stones/round.gemdb\" = \"" + expected + "\"\n"),
+    EXPECT_NE(manifest.find("[blake2b]\n\"stones/round.gemdb\" = \"" + expected + "\"\n"),
               std::string::npos)
         << manifest;
     // Sealing again replaces the table rather than adding a second.
@@ -182,7 +182,7 @@ TEST_F(SignedCatalogue, AChangedFileIsRefused) {
     bytes[bytes.size() / 2] ^= 0x10;
     write_bytes(dir / "stones" / "round.gemdb", bytes);
     EXPECT_EQ(verdict(dir, trusting({*chain_})),
-              "catalogue 'changed' rejected: stones/round.gemdb: does not match its SHA-256 in "
+              "catalogue 'changed' rejected: stones/round.gemdb: does not match its digest in "
               "the manifest (changed or damaged since the catalogue was made)");
 }
 
@@ -190,12 +190,12 @@ TEST_F(SignedCatalogue, AMissingOrAddedFileIsRefused) {
     const fs::path dir = signed_catalogue("missing", *chain_);
     fs::rename(dir / "stones" / "round.gemdb", dir / "round.gemdb");
     EXPECT_EQ(verdict(dir, trusting({*chain_})),
-              "catalogue 'missing' rejected: round.gemdb: not named in the manifest's [sha256] "
+              "catalogue 'missing' rejected: round.gemdb: not named in the manifest's [blake2b] "
               "table (added after signing, or left over from an interrupted installation)");
     fs::remove(dir / "round.gemdb");
     EXPECT_EQ(verdict(dir, trusting({*chain_})),
               "catalogue 'missing' rejected: stones/round.gemdb: missing (the manifest's "
-              "[sha256] table names it)");
+              "[blake2b] table names it)");
 }
 
 TEST_F(SignedCatalogue, ATruncatedSignatureIsRefused) {
@@ -253,7 +253,7 @@ TEST_F(SignedCatalogue, WithoutKeysTheDigestsStillFindDamage) {
     std::vector<std::uint8_t> bytes = read_bytes(dir / "stones" / "round.gemdb");
     bytes.back() ^= 0x01;
     write_bytes(dir / "stones" / "round.gemdb", bytes);
-    EXPECT_NE(verdict(dir, {}).find("stones/round.gemdb: does not match its SHA-256"),
+    EXPECT_NE(verdict(dir, {}).find("stones/round.gemdb: does not match its digest"),
               std::string::npos);
 }
 
@@ -262,7 +262,7 @@ TEST_F(SignedCatalogue, ASignedManifestWithoutDigestsIsRefused) {
     write_catalogue(dir, "nodigests");
     sign(dir / "catalogue.toml", *chain_);
     const std::string line = verdict(dir, trusting({*chain_}));
-    EXPECT_NE(line.find("catalogue 'nodigests' rejected: catalogue.toml: names no file's SHA-256"),
+    EXPECT_NE(line.find("catalogue 'nodigests' rejected: catalogue.toml: names no file's digest"),
               std::string::npos)
         << line;
 }

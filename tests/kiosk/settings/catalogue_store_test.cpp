@@ -12,7 +12,9 @@
 #include <thread>
 
 #include "catalogue/catalogue_store.hpp"
+#include "catalogue/validate.hpp"
 #include "catalogue_test_support.hpp"
+#include "commands.hpp"
 
 namespace gem::kiosk {
 namespace {
@@ -179,6 +181,31 @@ TEST(CatalogueStore, StartsFromCurrentElseTheDefault) {
     ASSERT_FALSE(none.ok());
     EXPECT_NE(none.error().find("truncated"), std::string::npos) << none.error();
     EXPECT_NE(none.error().find("catalogue.toml"), std::string::npos) << none.error();
+}
+
+// The installed copy is not hashed again at start (it was when installed): a file whose digest
+// no longer matches, but that still reads, is shown; the same copy delivered again is refused
+// for it. Its databases' own checksums still find damage (above).
+TEST(CatalogueStore, TheInstalledCopyIsNotHashedAgainAtStart) {
+    const fs::path root = fresh_dir("store-startup-digests");
+    CatalogueOptions options;
+    options.state_dir = root / "state";
+    options.default_catalogue = root / "default";
+    write_catalogue(root / "default", "shipped");
+    write_catalogue(root / "installed", "spring");
+    write_text(root / "installed" / "notes.txt", "made in spring");
+    ASSERT_EQ(tables::run_seal({(root / "installed").string(), ""}), 0);
+    auto copy = copy_catalogue(root / "installed", options.state_dir, "spring");
+    ASSERT_TRUE(copy.ok());
+    ASSERT_TRUE(make_current(options.state_dir, copy.value()).ok());
+    write_text(copy.value() / "notes.txt", "made in summer");
+    auto loaded = load_startup_catalogue(options);
+    ASSERT_TRUE(loaded.ok()) << loaded.error();
+    EXPECT_EQ(loaded.value().name, "spring");
+    const Result<Catalogue> delivered = validate_catalogue(copy.value());
+    ASSERT_FALSE(delivered.ok());
+    EXPECT_NE(delivered.error().find("notes.txt: does not match its digest"), std::string::npos)
+        << delivered.error();
 }
 
 }  // namespace
