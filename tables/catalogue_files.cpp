@@ -19,16 +19,6 @@ namespace fs = std::filesystem;
 
 namespace {
 
-std::string hex(const unsigned char* bytes, std::size_t size) {
-    static const char digits[] = "0123456789abcdef";
-    std::string out;
-    for (std::size_t i = 0; i < size; ++i) {
-        out += digits[bytes[i] >> 4];
-        out += digits[bytes[i] & 15];
-    }
-    return out;
-}
-
 constexpr const char* kDigestComment =
     "# Every other file of the catalogue and its digest (written by gemtables).";
 
@@ -95,7 +85,8 @@ Result<std::string> file_digest(const fs::path& path) {
     ::close(fd);
     unsigned char digest[kDigestBytes];
     crypto_generichash_final(&state, digest, sizeof digest);
-    return hex(digest, sizeof digest);
+    char text[2 * kDigestBytes + 1];
+    return std::string(sodium_bin2hex(text, sizeof text, digest, sizeof digest));
 }
 
 Result<std::string> digest_table(const fs::path& dir) {

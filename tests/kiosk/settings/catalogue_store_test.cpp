@@ -145,12 +145,18 @@ TEST(CatalogueStore, RemembersInstalledSources) {
               (std::vector<std::uint64_t>{0x0123456789abcdefull, 42}));
 }
 
-TEST(CatalogueStore, StartsFromCurrentElseTheDefault) {
-    const fs::path root = fresh_dir("store-startup");
+// Options for a kiosk under `root` whose shipped catalogue is "shipped".
+CatalogueOptions startup_options(const fs::path& root) {
     CatalogueOptions options;
     options.state_dir = root / "state";
     options.default_catalogue = root / "default";
     write_catalogue(root / "default", "shipped");
+    return options;
+}
+
+TEST(CatalogueStore, StartsFromCurrentElseTheDefault) {
+    const fs::path root = fresh_dir("store-startup");
+    const CatalogueOptions options = startup_options(root);
     {
         auto loaded = load_startup_catalogue(options);
         ASSERT_TRUE(loaded.ok()) << loaded.error();
@@ -188,10 +194,7 @@ TEST(CatalogueStore, StartsFromCurrentElseTheDefault) {
 // for it. Its databases' own checksums still find damage (above).
 TEST(CatalogueStore, TheInstalledCopyIsNotHashedAgainAtStart) {
     const fs::path root = fresh_dir("store-startup-digests");
-    CatalogueOptions options;
-    options.state_dir = root / "state";
-    options.default_catalogue = root / "default";
-    write_catalogue(root / "default", "shipped");
+    const CatalogueOptions options = startup_options(root);
     write_catalogue(root / "installed", "spring");
     write_text(root / "installed" / "notes.txt", "made in spring");
     ASSERT_EQ(tables::run_seal({(root / "installed").string(), ""}), 0);
