@@ -50,8 +50,9 @@ std::vector<ProgramSpec> all_program_specs() {
         {"bloom_up", {"fullscreen.vert"}, {"bloom_up.frag"}, {}},
         {"accumulate", {"fullscreen.vert"}, {"accumulate.frag"}, {}},
         {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
-        // The kiosk's rotate-and-encode copy to the window surface (kiosk/display/present_pass).
+        // The kiosk's turned copy to the window surface (kiosk/display/present_pass).
         {"present", {"fullscreen.vert"}, {"present.frag"}, {}},
+        {"present_bytes", {"fullscreen.vert"}, {"present.frag"}, {"PICTURE_BYTES"}},
     };
 }
 

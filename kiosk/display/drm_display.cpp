@@ -95,6 +95,9 @@ Result<std::unique_ptr<DrmDisplay>> DrmDisplay::make(const DisplayOptions& optio
     auto pass = PresentPass::make();
     if (!pass) return Error{where + pass.error()};
     d->present_.emplace(std::move(pass).value());
+    if (d->present_->copy() != PresentPass::Copy::bytes) {
+        log_info("display: no EXT_texture_sRGB_decode: the present pass decodes and encodes sRGB");
+    }
 
     if (options.atomic) d->commit_ = make_atomic_commit(d->output_);
     if (!d->commit_) d->commit_ = make_legacy_commit(d->output_);

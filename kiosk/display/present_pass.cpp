@@ -2,19 +2,41 @@
 
 #include <cassert>
 
+#include <GLES3/gl3.h>
+// After gl3.h, whose platform macros it uses: EXT_texture_sRGB_decode's names.
+#include <GLES2/gl2ext.h>
+
 #include "display/rotation.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/gl_extensions.hpp"
 #include "gpu/program_catalog.hpp"
 
 namespace gem::kiosk {
 
-PresentPass::PresentPass(gpu::Program program)
-    : program_(std::move(program)), empty_(gpu::make_vertex_array()) {}
+PresentPass::PresentPass(gpu::Program program, Copy copy)
+    : program_(std::move(program)), copy_(copy), empty_(gpu::make_vertex_array()) {
+    if (copy_ != Copy::bytes) return;
+    // The bytes copy reads through a sampler of its own (a sampler object's decode state
+    // overrides the texture's), point-sampled at texel centres: each texel as stored, and
+    // the picture itself left decoding for a cross-fade or a snapshot.
+    GLuint sampler = 0;
+    glGenSamplers(1, &sampler);
+    bytes_sampler_ = gpu::Sampler(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+}
 
-Result<PresentPass> PresentPass::make() {
-    auto program = gpu::build_program("present");
+PresentPass::Copy PresentPass::supported_copy() {
+    return gpu::gl_has_extension("GL_EXT_texture_sRGB_decode") ? Copy::bytes : Copy::reencode;
+}
+
+Result<PresentPass> PresentPass::make(Copy copy) {
+    auto program = gpu::build_program(copy == Copy::bytes ? "present_bytes" : "present");
     if (!program) return Error{program.error()};
-    return PresentPass(std::move(program).value());
+    return PresentPass(std::move(program).value(), copy);
 }
 
 Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_deg,
@@ -29,6 +51,7 @@ Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_de
     program_.use();
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, picture.colour_texture());
+    glBindSampler(0, bytes_sampler_.get());  // 0 (none) for the re-encoding copy
     program_.set("u_picture", 0);
     program_.set("u_from_scanout", map.linear);
     program_.set("u_from_scanout_offset", map.offset);
@@ -39,6 +62,7 @@ Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_de
     }
     glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_SCISSOR_TEST);
+    glBindSampler(0, 0);
     return gpu::gl_check("present pass");
 }
 

@@ -1,7 +1,8 @@
 #pragma once
 // Draws the picture into the bound framebuffer (the window surface), turned clockwise by the
-// display's rotation and sRGB-encoded by the shader, since the window surface is not an sRGB
-// framebuffer (engine/gpu/shaders/present.frag).
+// display's rotation, its sRGB bytes unchanged although the window surface is not an sRGB
+// framebuffer (engine/gpu/shaders/present.frag): copied as they are where the GL can skip
+// the sampler's sRGB decode (EXT_texture_sRGB_decode), else decoded and encoded again.
 
 #include <optional>
 
@@ -17,7 +18,14 @@ namespace gem::kiosk {
 
 class PresentPass {
   public:
-    static Result<PresentPass> make();
+    enum class Copy {
+        bytes,     // the stored bytes, undecoded (needs EXT_texture_sRGB_decode)
+        reencode,  // decoded to linear by the sampler, encoded by the shader
+    };
+    // The copy this GL allows, bytes where it can.
+    static Copy supported_copy();
+    static Result<PresentPass> make(Copy copy = supported_copy());
+    Copy copy() const { return copy_; }
     // Covers the bound framebuffer's (0, 0, scanout) viewport, or only `region` of it (scanout
     // pixels, y up) when given. The picture must be the scanout turned:
     // picture_size_for(scanout, rotation_deg).
@@ -25,8 +33,10 @@ class PresentPass {
                       const std::optional<gpu::PixelRect>& region = std::nullopt) const;
 
   private:
-    explicit PresentPass(gpu::Program program);
+    PresentPass(gpu::Program program, Copy copy);
     gpu::Program program_;
+    Copy copy_;
+    gpu::Sampler bytes_sampler_;
     gpu::VertexArray empty_;
 };
 

@@ -6,9 +6,11 @@
 //     and at 4× MSAA with glare 0.04, then the resolve, the still view's running mean, the
 //     glare pyramid and the tone curve, each bounded by glFinish; medians of --frames frames,
 //     trace (depth 8, first-order fire) and phong; the share of a moving frame the passes after
-//     the scene take; and the share of the picture they rewrote (around the piece and its
-//     glare's reach, hdr_picture.hpp). The bench's last line is for a script to read, the trace at
-//     4× MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5 costs R of zoom 1".
+//     the scene take (the present pass to the screen's buffer included: a back buffer that
+//     lacks this frame's changes only); and the share of the picture they rewrote (around
+//     the piece and its glare's reach, hdr_picture.hpp). The bench's last line is for a script to
+//     read, the trace at 4× MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5
+//     costs R of zoom 1".
 //  2. Edges against the CPU reference at 16 samples per pixel, the loose diamond at 256²
 //     (zoom 1, 40° elevation, the studio, no glare, the same tone curve on both): the mean
 //     8-bit error on its edge pixels (where the reference's own single centre sample is more
@@ -18,16 +20,22 @@
 //     pixel's 8-bit luma from frame to frame, for the trace at 1 sample, 4× MSAA, 4× MSAA with
 //     glare, and for the CPU reference's frames (16 samples per pixel).
 //
+//  4. The present pass (kiosk/display/present_pass.hpp) over the whole 1920×1080 picture:
+//     its bytes copied undecoded against decoded and encoded again by the shader, drawn in
+//     turn, medians and the median of their frame-by-frame ratios.
+//
 //   bench_picture [--frames N] [--turn N]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <optional>
 #include <vector>
 
 #include "app/framing.hpp"
 #include "app/start_view.hpp"
+#include "display/present_pass.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
@@ -50,6 +58,28 @@ T must(gem::Result<T> r) {
 }
 
 using gem::bench::median;
+
+// The screen's buffer as the DRM backend draws it: plain 8-bit RGBA, not sRGB.
+struct ScreenBuffer {
+    gem::gpu::Texture colour = gem::gpu::make_texture_2d(GL_RGBA8, 1920, 1080, GL_NEAREST);
+    gem::gpu::Framebuffer framebuffer = gem::gpu::make_framebuffer_with(colour.get());
+    glm::ivec2 size{1920, 1080};
+};
+
+double ms_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// One present pass into `screen`, over `region` (nullopt: whole), bounded by glFinish.
+double time_present(const gem::kiosk::PresentPass& pass, const gem::gpu::RenderTarget& picture,
+                    const ScreenBuffer& screen, const std::optional<gem::gpu::PixelRect>& region) {
+    glBindFramebuffer(GL_FRAMEBUFFER, screen.framebuffer.get());
+    glFinish();
+    const auto t0 = std::chrono::steady_clock::now();
+    must(pass.draw(picture, 0, screen.size, region));
+    glFinish();
+    return ms_since(t0);
+}
 
 gem::gpu::PictureOptions options(int samples, double glare, int still_frames) {
     gem::gpu::PictureOptions o;
@@ -81,19 +111,20 @@ gem::gpu::FrameRenderer make_renderer(const std::string& method, const gem::Ston
 // passes within it, and each finishing pass.
 struct PassCosts {
     double scene = 0.0, stone = 0.0, metal = 0.0, resolve = 0.0, mean = 0.0, glare = 0.0,
-           tone = 0.0;
+           tone = 0.0, present = 0.0;
     double rewritten = 0.0;  // share of the picture a moving frame's tone pass rewrote
     // A moving frame: the scene and the passes after it (the still view's mean is not in it).
-    double total() const { return scene + resolve + glare + tone; }
-    double finishing() const { return resolve + glare + tone; }
+    double total() const { return scene + finishing(); }
+    double finishing() const { return resolve + glare + tone + present; }
 };
 
 PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
                       double zoom, int samples, double glare, int frames,
-                      const gem::gpu::RenderTarget& picture) {
+                      const gem::gpu::RenderTarget& picture, const gem::kiosk::PresentPass& pass,
+                      const ScreenBuffer& screen) {
     const int w = picture.width(), h = picture.height();
     auto hdr = must(gem::gpu::HdrPicture::make(w, h, options(samples, glare, 16)));
-    std::vector<double> scene, stone, metal, resolve, mean, glare_ms, tone, rewritten;
+    std::vector<double> scene, stone, metal, resolve, mean, glare_ms, tone, present, rewritten;
     for (int f = -1; f < frames; ++f) {
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         view.zoom = zoom;
@@ -112,6 +143,7 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
             must(renderer.render(camera, gem::gpu::FrameWait::passes));
         gem::gpu::FinishTimes t;
         must(hdr.finish(picture, &t));
+        const double present_ms = time_present(pass, picture, screen, hdr.target_region());
         if (f < 0) continue;
         scene.push_back(drawn.cpu_ms);
         stone.push_back(drawn.stone_ms);
@@ -120,6 +152,7 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         glare_ms.push_back(t.glare_ms);
         tone.push_back(t.tone_ms);
         if (f % 2 == 0) {
+            present.push_back(present_ms);
             rewritten.push_back(static_cast<double>(hdr.target_region().area()) / (double(w) * h));
         }
     }
@@ -132,6 +165,7 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
             median(mean) - median(resolve),
             median(glare_ms),
             median(tone),
+            median(present),
             median(rewritten)};
 }
 
@@ -150,10 +184,12 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         "at zoom 0.5 (median ms of %d frames; each pass bounded by glFinish; finishing: the "
         "passes after the scene, share of a moving frame)\n",
         w, h, frames);
-    std::printf("%-6s %-8s %-12s %7s %7s %7s %8s %7s %7s %7s %8s %10s %10s\n", "zoom", "method",
-                "picture", "scene", "stone", "metal", "resolve", "mean", "glare", "tone", "total",
-                "finishing", "rewritten");
+    std::printf("%-6s %-8s %-12s %7s %7s %7s %8s %7s %7s %7s %8s %8s %10s %10s\n", "zoom", "method",
+                "picture", "scene", "stone", "metal", "resolve", "mean", "glare", "tone", "present",
+                "total", "finishing", "rewritten");
     auto picture = must(gem::gpu::RenderTarget::make(w, h));
+    const auto pass = must(gem::kiosk::PresentPass::make());
+    const ScreenBuffer screen;
     struct Look {
         const char* name;
         int samples;
@@ -171,13 +207,14 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         for (int z = 0; z < 2; ++z) {
             const double zoom = z == 0 ? 1.0 : 0.5;
             for (const Look& look : looks) {
-                const PassCosts c =
-                    time_passes(renderer, framing, zoom, look.samples, look.glare, frames, picture);
+                const PassCosts c = time_passes(renderer, framing, zoom, look.samples, look.glare,
+                                                frames, picture, pass, screen);
                 std::printf(
-                    "%-6.2g %-8s %-12s %7.1f %7.1f %7.1f %8.1f %7.1f %7.1f %7.1f %8.1f "
+                    "%-6.2g %-8s %-12s %7.1f %7.1f %7.1f %8.1f %7.1f %7.1f %7.1f %8.1f %8.1f "
                     "%9.0f%% %9.0f%%\n",
                     zoom, method, look.name, c.scene, c.stone, c.metal, c.resolve, c.mean, c.glare,
-                    c.tone, c.total(), 100.0 * c.finishing() / c.total(), 100.0 * c.rewritten);
+                    c.tone, c.present, c.total(), 100.0 * c.finishing() / c.total(),
+                    100.0 * c.rewritten);
                 std::fflush(stdout);
                 if (std::strcmp(method, "trace") == 0 && look.samples == 4) {
                     kiosk_total[z] = c.total();
@@ -332,6 +369,34 @@ void edges_and_flicker(const gem::Stone& stone, const gem::Environment& environm
 
 }  // namespace
 
+void present_copies(int frames) {
+    const int w = 1920, h = 1080;
+    std::printf(
+        "\n4. the present pass over the whole %d×%d picture (median ms of %d frames, "
+        "drawn in turn)\n",
+        w, h, frames);
+    if (gem::kiosk::PresentPass::supported_copy() != gem::kiosk::PresentPass::Copy::bytes) {
+        std::printf("this GL cannot skip the sRGB decode: only the re-encoding copy runs\n");
+        return;
+    }
+    const auto picture = must(gem::gpu::RenderTarget::make(w, h));
+    const auto bytes = must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::bytes));
+    const auto reencode =
+        must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::reencode));
+    const ScreenBuffer screen;
+    std::vector<double> bytes_ms, reencode_ms, ratio;
+    for (int f = -1; f < frames; ++f) {
+        const double b = time_present(bytes, picture, screen, std::nullopt);
+        const double r = time_present(reencode, picture, screen, std::nullopt);
+        if (f < 0) continue;
+        bytes_ms.push_back(b);
+        reencode_ms.push_back(r);
+        ratio.push_back(b / r);
+    }
+    std::printf("%-34s %8.2f\n%-34s %8.2f\n%-34s %8.2f\n", "bytes copied", median(bytes_ms),
+                "decoded and encoded", median(reencode_ms), "ratio", median(ratio));
+}
+
 int main(int argc, char** argv) {
     int frames = 8, turn = 12;
     for (int i = 1; i < argc; ++i) {
@@ -345,6 +410,7 @@ int main(int argc, char** argv) {
     const gem::Environment environment = gem::Environment::studio();
     const Summary summary = pass_costs(stone, environment, std::max(frames, 2));
     edges_and_flicker(stone, environment, std::max(turn, 2));
+    present_copies(std::max(frames, 2) * 2);
     std::printf("bench_picture: finishing %.0f%% of the frame; zoom 0.5 costs %.2f of zoom 1\n",
                 100.0 * summary.finishing_share, summary.half_zoom_ratio);
     return 0;
