@@ -1,0 +1,126 @@
+// One step up the glare's pyramid (shaders/bloom_up.frag) against its definition computed on
+// the CPU: at each texel's centre, the 3×3 tent (1 2 1 / 2 4 2 / 1 2 1, over 16) of bilinear
+// samples of the smaller level taken ±1 of its texels apart (clamped at the edges), plus the
+// level's own downsample. The shader draws the same sum from four bilinear taps; this holds
+// it to the nine, at a level exactly twice the smaller one's size and at sizes the halving of
+// a 1080-line picture gives (67 from 33, 135 from 67: not twice).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include <GLES3/gl3.h>
+
+#include "gpu/gl_handles.hpp"
+#include "gpu/program_catalog.hpp"
+#include "gpu_test_support.hpp"
+
+namespace gem {
+namespace {
+
+struct Level {
+    int width, height;
+    std::vector<float> rgba;  // row 0 at the bottom, as GL stores it
+
+    float at(int x, int y, int c) const {  // clamped to the edge, as the sampler clamps
+        x = std::clamp(x, 0, width - 1);
+        y = std::clamp(y, 0, height - 1);
+        return rgba[(static_cast<std::size_t>(y) * width + x) * 4 + c];
+    }
+    // Bilinear at (u, v) in texel units (texel centres at +0.5).
+    float bilinear(double u, double v, int c) const {
+        const double x = u - 0.5, y = v - 0.5;
+        const int x0 = static_cast<int>(std::floor(x)), y0 = static_cast<int>(std::floor(y));
+        const double fx = x - x0, fy = y - y0;
+        return static_cast<float>((1 - fy) * ((1 - fx) * at(x0, y0, c) + fx * at(x0 + 1, y0, c)) +
+                                  fy * ((1 - fx) * at(x0, y0 + 1, c) + fx * at(x0 + 1, y0 + 1, c)));
+    }
+};
+
+// Values a half float holds exactly, varied enough that a wrong weight shows.
+Level pattern(int width, int height, int seed) {
+    Level level{width, height, std::vector<float>(static_cast<std::size_t>(width) * height * 4)};
+    unsigned state = 2463534242u + static_cast<unsigned>(seed);
+    for (float& v : level.rgba) {
+        state ^= state << 13;
+        state ^= state >> 17;
+        state ^= state << 5;
+        v = static_cast<float>(state % 256) / 64.0f;  // 0 .. 4 in steps of 1/64
+    }
+    return level;
+}
+
+gpu::Texture upload(const Level& level) {
+    gpu::Texture t = gpu::make_texture_2d(GL_RGBA16F, level.width, level.height, GL_LINEAR);
+    glBindTexture(GL_TEXTURE_2D, t.get());
+    glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, level.width, level.height, GL_RGBA, GL_FLOAT,
+                    level.rgba.data());
+    return t;
+}
+
+void expect_step_up_is_the_tent(int source_w, int source_h, int target_w, int target_h) {
+    const Level source = pattern(source_w, source_h, 1);
+    const Level own = pattern(target_w, target_h, 2);
+    auto program = gpu::build_program("bloom_up");
+    ASSERT_TRUE(program) << program.error();
+    const gpu::Texture source_texture = upload(source);
+    const gpu::Texture own_texture = upload(own);
+    const gpu::Texture out = gpu::make_texture_2d(GL_RGBA32F, target_w, target_h, GL_NEAREST);
+    const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(out.get());
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    const gpu::VertexArray empty = gpu::make_vertex_array();
+    glViewport(0, 0, target_w, target_h);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    program.value().use();
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, own_texture.get());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source_texture.get());
+    program.value().set("u_source", 0);
+    program.value().set("u_own", 1);
+    program.value().set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
+    program.value().set("u_target_texel", glm::vec2(1.0f / target_w, 1.0f / target_h));
+    glBindVertexArray(empty.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
+    glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+    const int weights[3] = {1, 2, 1};
+    double worst = 0.0;
+    for (int y = 0; y < target_h; ++y) {
+        for (int x = 0; x < target_w; ++x) {
+            // This texel's centre in the smaller level's texel units.
+            const double u = (x + 0.5) * source_w / target_w;
+            const double v = (y + 0.5) * source_h / target_h;
+            for (int c = 0; c < 3; ++c) {
+                double tent = 0.0;
+                for (int j = -1; j <= 1; ++j) {
+                    for (int i = -1; i <= 1; ++i) {
+                        tent += weights[i + 1] * weights[j + 1] * source.bilinear(u + i, v + j, c);
+                    }
+                }
+                const double want = own.at(x, y, c) + tent / 16.0;
+                const double error =
+                    std::abs(got[(static_cast<std::size_t>(y) * target_w + x) * 4 + c] - want);
+                worst = std::max(worst, error);
+            }
+        }
+    }
+    // Values up to 8; a float bilinear weight rounds at about 1e-6 of them. A tap a texel off,
+    // or a weight a sixteenth off, is out by a large share of the 1/64 steps.
+    EXPECT_LT(worst, 2e-3) << source_w << "×" << source_h << " up to " << target_w << "×"
+                           << target_h;
+}
+
+TEST(GpuBloomUp, AStepUpIsTheTentOfNineBilinearTaps) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    expect_step_up_is_the_tent(8, 5, 16, 10);
+    expect_step_up_is_the_tent(33, 16, 67, 33);
+    expect_step_up_is_the_tent(67, 33, 135, 67);
+}
+
+}  // namespace
+}  // namespace gem
