@@ -6,6 +6,7 @@
 // a 1080-line picture gives (67 from 33, 135 from 67: not twice).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <vector>
 

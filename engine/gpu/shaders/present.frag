@@ -4,9 +4,8 @@
 // PICTURE_BYTES: the sampler hands back the stored bytes (EXT_texture_sRGB_decode's
 // SKIP_DECODE_EXT, a sampler state: a lookup through the sampler, not texelFetch, which Mesa
 // decodes regardless), point-sampled at the texel's centre, and each is written back exactly
-// (b / 255 converts to b). Otherwise the
-// sampler decodes sRGB to linear light and this pass encodes it again (IEC 61966-2-1): three
-// powers a pixel, which a CPU rasteriser pays in full.
+// (b / 255 converts to b). Otherwise the sampler decodes sRGB to linear light and this pass
+// encodes it again (IEC 61966-2-1): three powers a pixel, which a CPU rasteriser pays in full.
 // u_from_scanout maps a scanout pixel centre (gl_FragCoord, y up) to the picture texel centre
 // it shows: a quarter-turn matrix and an offset in pixels (kiosk/display/rotation.hpp).
 uniform sampler2D u_picture;
