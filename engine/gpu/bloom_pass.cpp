@@ -20,6 +20,13 @@ Result<BloomPass> BloomPass::make(int width, int height) {
     if (!up) return Error{up.error()};
     BloomPass b(std::move(down).value(), std::move(up).value());
     b.empty_ = make_vertex_array();
+    GLuint sampler = 0;
+    glGenSamplers(1, &sampler);
+    b.picture_sampler_ = Sampler(sampler);
+    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     b.width_ = width;
     b.height_ = height;
     int w = width / 2, h = height / 2;
@@ -97,6 +104,7 @@ Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& conten
         glViewport(0, 0, level.width, level.height);
         scissor(down[i]);
         glBindTexture(GL_TEXTURE_2D, source);
+        glBindSampler(0, i == 0 ? picture_sampler_.get() : 0);
         down_.set("u_source_texel", source_texel);
         down_.set("u_karis", i == 0 ? 1 : 0);
         glDrawArrays(GL_TRIANGLES, 0, 3);
@@ -104,6 +112,7 @@ Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& conten
         source_texel = glm::vec2(1.0f / static_cast<float>(level.width),
                                  1.0f / static_cast<float>(level.height));
     }
+    glBindSampler(0, 0);
     up_.use();
     up_.set("u_source", 0);
     up_.set("u_own", 1);

@@ -26,7 +26,8 @@ class BloomPass {
     // Errors: RGBA16F not renderable, a shader that does not build.
     static Result<BloomPass> make(int width, int height);
 
-    // Filters `scene` (an RGBA16F texture of the picture's size) into the pyramid. `content`:
+    // Filters `scene` (an RGBA16F texture of the picture's size, or RGBA32F where the GL filters
+    // floats: OES_texture_float_linear) into the pyramid. `content`:
     // where the scene differs from one flat colour, which it was everywhere else the last time
     // too (nullopt: anywhere); each level is then rewritten only where this content or the
     // last run's reaches it. Leaves the scissor test on.
@@ -66,6 +67,12 @@ class BloomPass {
 
     Program down_;
     Program up_;
+    // The first step's read of the picture: bilinear, whatever filter the picture's texture
+    // has (HdrPicture's are point-sampled: its other passes fetch texels), so that each of the
+    // 13 taps averages 2×2 of its pixels. Point-sampled, the taps see one pixel of each 2×2
+    // block in a checkerboard, and a sparkle's glare comes and goes as it moves by a pixel
+    // (GpuBloomEnergy).
+    Sampler picture_sampler_;
     VertexArray empty_;
     std::vector<Level> levels_;
     SurfaceDamage damage_;

@@ -94,11 +94,13 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         // On a diamond at depth 64 (bench_still_picture --still-frames N, the wavelengths then
         // in base-2 order): 64 frames ΔE00 3.11 in half floats, 3.06 in floats; 1024 frames
         // 4.39 against 3.08. So beyond 64 frames the mean is kept in floats where the GPU
-        // renders and blends them; at the kiosk's 16 the half floats' bandwidth is enough
-        // (ΔE00 0.02 apart).
-        p.mean_high_precision_ = options.still_frames > kHalfFloatMeanFrames &&
-                                 gl_has_extension("GL_EXT_color_buffer_float") &&
-                                 gl_has_extension("GL_EXT_float_blend");
+        // renders and blends them, and filters them where the glare reads the mean; at the
+        // kiosk's 16 the half floats' bandwidth is enough (ΔE00 0.02 apart).
+        p.mean_high_precision_ =
+            options.still_frames > kHalfFloatMeanFrames &&
+            gl_has_extension("GL_EXT_color_buffer_float") &&
+            gl_has_extension("GL_EXT_float_blend") &&
+            (options.glare <= 0.0 || gl_has_extension("GL_OES_texture_float_linear"));
         p.mean_ = make_texture_2d(p.mean_high_precision_ ? GL_RGBA32F : GL_RGBA16F, width, height,
                                   GL_NEAREST);
         p.mean_framebuffer_ = make_framebuffer_with(p.mean_.get());

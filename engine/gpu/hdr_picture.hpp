@@ -134,7 +134,8 @@ class HdrPicture {
     Texture resolved_;
     Renderbuffer resolved_depth_;
     // The still view's running mean: RGBA16F, or RGBA32F (mean_high_precision_) for more than
-    // kHalfFloatMeanFrames frames where the GPU can blend floats.
+    // kHalfFloatMeanFrames frames where the GPU can blend floats (and filter them, for the
+    // glare).
     static constexpr int kHalfFloatMeanFrames = 64;
     Texture mean_;
     bool mean_high_precision_ = false;

@@ -1,9 +1,13 @@
-// One step up the glare's pyramid (shaders/bloom_up.frag) against its definition computed on
-// the CPU: at each texel's centre, the 3×3 tent (1 2 1 / 2 4 2 / 1 2 1, over 16) of bilinear
-// samples of the smaller level taken ±1 of its texels apart (clamped at the edges), plus the
-// level's own downsample. The shader draws the same sum from four bilinear taps; this holds
-// it to the nine, at a level exactly twice the smaller one's size and at sizes the halving of
-// a 1080-line picture gives (67 from 33, 135 from 67: not twice).
+// The glare pyramid's steps (shaders/bloom_down.frag, shaders/bloom_up.frag) against their
+// definitions computed on the CPU in double, with the sampler's clamping at the edges:
+// - down: Jimenez's 13 bilinear taps (SIGGRAPH 2014) about the corner between source texels 2J
+//   and 2J + 1, grouped in five boxes, each weighted by Karis' 1 / (1 + luma) on the first
+//   step;
+// - up: at each texel's centre, the 3×3 tent (1 2 1 / 2 4 2 / 1 2 1, over 16) of bilinear
+//   samples of the smaller level taken ±1 of its texels apart, plus the level's own
+//   downsample; the shader draws the same sum from four bilinear taps.
+// At sizes that halve exactly and at those the halving of a 1080-line picture gives (67 from
+// 135 and from 33, 135 from 67: not twice).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -113,6 +117,89 @@ void expect_step_up_is_the_tent(int source_w, int source_h, int target_w, int ta
     // or a weight a sixteenth off, is out by a large share of the 1/64 steps.
     EXPECT_LT(worst, 2e-3) << source_w << "×" << source_h << " up to " << target_w << "×"
                            << target_h;
+}
+
+double luma(const double c[3]) {
+    return 0.2126 * c[0] + 0.7152 * c[1] + 0.0722 * c[2];
+}
+
+void expect_step_down_is_jimenez(int source_w, int source_h, bool karis) {
+    const int target_w = source_w / 2, target_h = source_h / 2;
+    // Dim values, so that Karis' weights differ from box to box without drowning the test.
+    Level source = pattern(source_w, source_h, 3);
+    for (float& v : source.rgba) v /= 4.0f;
+    auto program = gpu::build_program("bloom_down");
+    ASSERT_TRUE(program) << program.error();
+    const gpu::Texture source_texture = upload(source);
+    const gpu::Texture out = gpu::make_texture_2d(GL_RGBA32F, target_w, target_h, GL_NEAREST);
+    const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(out.get());
+    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    const gpu::VertexArray empty = gpu::make_vertex_array();
+    glViewport(0, 0, target_w, target_h);
+    glDisable(GL_SCISSOR_TEST);
+    glDisable(GL_BLEND);
+    program.value().use();
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, source_texture.get());
+    program.value().set("u_source", 0);
+    program.value().set("u_karis", karis ? 1 : 0);
+    program.value().set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
+    glBindVertexArray(empty.get());
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+    std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
+    glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
+    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+
+    double worst = 0.0;
+    for (int y = 0; y < target_h; ++y) {
+        for (int x = 0; x < target_w; ++x) {
+            // A bilinear tap `o` texels from the corner (2x + 1, 2y + 1), in texel units.
+            const auto tap = [&](int ox, int oy, double into[3]) {
+                for (int c = 0; c < 3; ++c) {
+                    into[c] = source.bilinear(2.0 * x + 1 + ox, 2.0 * y + 1 + oy, c);
+                }
+            };
+            // Jimenez's boxes: the inner one of the four taps at ±1, weighted 0.5, and the four
+            // corner ones of the taps at 0 and ±2, 0.125 each.
+            const int boxes[5][4][2] = {{{-1, 1}, {1, 1}, {-1, -1}, {1, -1}},
+                                        {{-2, 2}, {0, 2}, {-2, 0}, {0, 0}},
+                                        {{0, 2}, {2, 2}, {0, 0}, {2, 0}},
+                                        {{-2, 0}, {0, 0}, {-2, -2}, {0, -2}},
+                                        {{0, 0}, {2, 0}, {0, -2}, {2, -2}}};
+            const double shares[5] = {0.5, 0.125, 0.125, 0.125, 0.125};
+            double sum[3] = {0, 0, 0}, weight = 0.0;
+            for (int b = 0; b < 5; ++b) {
+                double mean[3] = {0, 0, 0};
+                for (const auto& t : boxes[b]) {
+                    double v[3];
+                    tap(t[0], t[1], v);
+                    for (int c = 0; c < 3; ++c) mean[c] += 0.25 * v[c];
+                }
+                const double w = shares[b] * (karis ? 1.0 / (1.0 + luma(mean)) : 1.0);
+                weight += w;
+                for (int c = 0; c < 3; ++c) sum[c] += w * mean[c];
+            }
+            for (int c = 0; c < 3; ++c) {
+                const double want = sum[c] / weight;
+                const double error =
+                    std::abs(got[(static_cast<std::size_t>(y) * target_w + x) * 4 + c] - want);
+                worst = std::max(worst, error);
+            }
+        }
+    }
+    // Values up to 1 in steps of 1/256; a tap a texel off or a box weighted wrongly is out by
+    // a large share of a step.
+    EXPECT_LT(worst, 2e-4) << source_w << "×" << source_h << (karis ? " with" : " without")
+                           << " Karis' weights";
+}
+
+TEST(GpuBloomDown, AStepDownIsJimenezsThirteenTaps) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    for (const bool karis : {true, false}) {
+        expect_step_down_is_jimenez(16, 10, karis);
+        expect_step_down_is_jimenez(135, 67, karis);
+    }
 }
 
 TEST(GpuBloomUp, AStepUpIsTheTentOfNineBilinearTaps) {
