@@ -19,7 +19,6 @@
 //  3. Flicker: the same stone turning 0.1° a frame for --turn frames; the mean change of a
 //     pixel's 8-bit luma from frame to frame, for the trace at 1 sample, 4× MSAA, 4× MSAA with
 //     glare, and for the CPU reference's frames (16 samples per pixel).
-//
 //  4. The present pass (kiosk/display/present_pass.hpp) over the whole 1920×1080 picture:
 //     its bytes copied undecoded against decoded and encoded again by the shader, drawn in
 //     turn, medians and the median of their frame-by-frame ratios.

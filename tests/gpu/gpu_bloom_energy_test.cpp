@@ -6,7 +6,7 @@
 // energy, so its texels summed over their area must give levels() times the texel's light.
 #include <gtest/gtest.h>
 
-#include <cmath>
+#include <utility>
 #include <vector>
 
 #include <GLES3/gl3.h>
