@@ -20,13 +20,7 @@ Result<BloomPass> BloomPass::make(int width, int height) {
     if (!up) return Error{up.error()};
     BloomPass b(std::move(down).value(), std::move(up).value());
     b.empty_ = make_vertex_array();
-    GLuint sampler = 0;
-    glGenSamplers(1, &sampler);
-    b.picture_sampler_ = Sampler(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    b.picture_sampler_ = make_sampler(GL_LINEAR);
     b.width_ = width;
     b.height_ = height;
     int w = width / 2, h = height / 2;

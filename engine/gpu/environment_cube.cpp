@@ -44,13 +44,7 @@ Result<EnvironmentCube> EnvironmentCube::allocate(int face_size) {
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
     glTexParameteri(GL_TEXTURE_CUBE_MAP, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    GLuint sampler = 0;
-    glGenSamplers(1, &sampler);
-    cube.sharp_sampler_ = Sampler(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_LINEAR);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    cube.sharp_sampler_ = make_sampler(GL_LINEAR);
     auto ok = gl_check("environment cube: allocate");
     if (!ok) return Error{ok.error()};
     return cube;

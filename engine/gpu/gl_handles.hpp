@@ -87,6 +87,17 @@ inline Texture make_texture_2d(GLenum format, int width, int height, GLenum filt
     glTexParameteri(GL_TEXTURE_2D, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
     return texture;
 }
+// A sampler object reading with `filter` (level 0 only: no mip filter) and clamped at the edges,
+// which overrides a texture's own filter while it is bound to the texture's unit.
+inline Sampler make_sampler(GLenum filter) {
+    GLuint n = 0;
+    glGenSamplers(1, &n);
+    glSamplerParameteri(n, GL_TEXTURE_MIN_FILTER, static_cast<GLint>(filter));
+    glSamplerParameteri(n, GL_TEXTURE_MAG_FILTER, static_cast<GLint>(filter));
+    glSamplerParameteri(n, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
+    glSamplerParameteri(n, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
+    return Sampler(n);
+}
 inline Buffer make_buffer() {
     GLuint n = 0;
     glGenBuffers(1, &n);

@@ -19,14 +19,8 @@ PresentPass::PresentPass(gpu::Program program, Copy copy)
     // The bytes copy reads through a sampler of its own (a sampler object's decode state
     // overrides the texture's), point-sampled at texel centres: each texel as stored, and
     // the picture itself left decoding for a cross-fade or a snapshot.
-    GLuint sampler = 0;
-    glGenSamplers(1, &sampler);
-    bytes_sampler_ = gpu::Sampler(sampler);
-    glSamplerParameteri(sampler, GL_TEXTURE_MIN_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_MAG_FILTER, GL_NEAREST);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_S, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler, GL_TEXTURE_WRAP_T, GL_CLAMP_TO_EDGE);
-    glSamplerParameteri(sampler, GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
+    bytes_sampler_ = gpu::make_sampler(GL_NEAREST);
+    glSamplerParameteri(bytes_sampler_.get(), GL_TEXTURE_SRGB_DECODE_EXT, GL_SKIP_DECODE_EXT);
 }
 
 PresentPass::Copy PresentPass::supported_copy() {

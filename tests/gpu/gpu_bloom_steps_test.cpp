@@ -63,34 +63,47 @@ gpu::Texture upload(const Level& level) {
     return t;
 }
 
-void expect_step_up_is_the_tent(int source_w, int source_h, int target_w, int target_h) {
-    const Level source = pattern(source_w, source_h, 1);
-    const Level own = pattern(target_w, target_h, 2);
-    auto program = gpu::build_program("bloom_up");
-    ASSERT_TRUE(program) << program.error();
-    const gpu::Texture source_texture = upload(source);
-    const gpu::Texture own_texture = upload(own);
+// Draws the program `name` over a target_w × target_h RGBA32F target, once `bind` has bound
+// its textures and set its uniforms, and reads the target back (row 0 at the bottom).
+template <class Bind>
+std::vector<float> draw_step(const char* name, int target_w, int target_h, Bind bind) {
+    auto program = gpu::build_program(name);
+    EXPECT_TRUE(program) << program.error();
+    if (!program) return {};
     const gpu::Texture out = gpu::make_texture_2d(GL_RGBA32F, target_w, target_h, GL_NEAREST);
     const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(out.get());
-    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
+    EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
     const gpu::VertexArray empty = gpu::make_vertex_array();
     glViewport(0, 0, target_w, target_h);
     glDisable(GL_SCISSOR_TEST);
     glDisable(GL_BLEND);
     program.value().use();
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, own_texture.get());
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, source_texture.get());
-    program.value().set("u_source", 0);
-    program.value().set("u_own", 1);
-    program.value().set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
-    program.value().set("u_target_texel", glm::vec2(1.0f / target_w, 1.0f / target_h));
+    bind(program.value());
     glBindVertexArray(empty.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
     glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    return got;
+}
+
+void expect_step_up_is_the_tent(int source_w, int source_h, int target_w, int target_h) {
+    const Level source = pattern(source_w, source_h, 1);
+    const Level own = pattern(target_w, target_h, 2);
+    const gpu::Texture source_texture = upload(source);
+    const gpu::Texture own_texture = upload(own);
+    const std::vector<float> got =
+        draw_step("bloom_up", target_w, target_h, [&](const gpu::Program& program) {
+            glActiveTexture(GL_TEXTURE1);
+            glBindTexture(GL_TEXTURE_2D, own_texture.get());
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, source_texture.get());
+            program.set("u_source", 0);
+            program.set("u_own", 1);
+            program.set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
+            program.set("u_target_texel", glm::vec2(1.0f / target_w, 1.0f / target_h));
+        });
+    ASSERT_EQ(got.size(), static_cast<std::size_t>(target_w) * target_h * 4);
 
     const int weights[3] = {1, 2, 1};
     double worst = 0.0;
@@ -128,27 +141,16 @@ void expect_step_down_is_jimenez(int source_w, int source_h, bool karis) {
     // Dim values, so that Karis' weights differ from box to box without drowning the test.
     Level source = pattern(source_w, source_h, 3);
     for (float& v : source.rgba) v /= 4.0f;
-    auto program = gpu::build_program("bloom_down");
-    ASSERT_TRUE(program) << program.error();
     const gpu::Texture source_texture = upload(source);
-    const gpu::Texture out = gpu::make_texture_2d(GL_RGBA32F, target_w, target_h, GL_NEAREST);
-    const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(out.get());
-    ASSERT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-    const gpu::VertexArray empty = gpu::make_vertex_array();
-    glViewport(0, 0, target_w, target_h);
-    glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    program.value().use();
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_2D, source_texture.get());
-    program.value().set("u_source", 0);
-    program.value().set("u_karis", karis ? 1 : 0);
-    program.value().set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
-    glBindVertexArray(empty.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
-    std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
-    glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
-    ASSERT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    const std::vector<float> got =
+        draw_step("bloom_down", target_w, target_h, [&](const gpu::Program& program) {
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D, source_texture.get());
+            program.set("u_source", 0);
+            program.set("u_karis", karis ? 1 : 0);
+            program.set("u_source_texel", glm::vec2(1.0f / source_w, 1.0f / source_h));
+        });
+    ASSERT_EQ(got.size(), static_cast<std::size_t>(target_w) * target_h * 4);
 
     double worst = 0.0;
     for (int y = 0; y < target_h; ++y) {
