@@ -10,6 +10,7 @@
 #include "gpu/piece_tables.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "gpu/ring_renderer.hpp"
+#include "util/elapsed.hpp"
 
 namespace gem::gpu {
 
@@ -198,9 +199,6 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     glClear(GL_DEPTH_BUFFER_BIT);
     auto ok = background_->draw(camera, *environment_cube_, flat_background(camera));
     if (!ok) return Error{ok.error()};
-    const auto ms_since = [](Clock::time_point t) {
-        return std::chrono::duration<double, std::milli>(Clock::now() - t).count();
-    };
     // One pass timed alone (FrameWait::passes): from the glFinish before it to one after it.
     if (wait == FrameWait::passes) glFinish();
     auto pass_start = Clock::now();

@@ -8,6 +8,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_extensions.hpp"
 #include "gpu/program_catalog.hpp"
+#include "util/elapsed.hpp"
 #include "util/radical_inverse.hpp"
 
 namespace gem::gpu {
@@ -26,10 +27,6 @@ int max_samples(GLenum format) {
 
 bool complete() {
     return glCheckFramebufferStatus(GL_FRAMEBUFFER) == GL_FRAMEBUFFER_COMPLETE;
-}
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
 }
 
 }  // namespace

@@ -8,15 +8,12 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu/texel_array.hpp"
+#include "util/elapsed.hpp"
 
 namespace gem::gpu {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double ms_since(Clock::time_point start) {
-    return std::chrono::duration<double, std::milli>(Clock::now() - start).count();
-}
 
 }  // namespace
 

@@ -18,6 +18,7 @@
 #include "render/camera.hpp"
 #include "trace/convex_pieces.hpp"
 #include "trace/folded_exit.hpp"
+#include "util/elapsed.hpp"
 
 namespace gem::gpu {
 namespace {
@@ -269,9 +270,7 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
             auto ok = m.draw(frame, TraceSettings{});
             glFinish();
             if (!ok) return Error{ok.error()};
-            const double ms =
-                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
-                    .count();
+            const double ms = ms_since(start);
             if (i > 0) best = std::min(best, ms);
         }
         return best;

@@ -8,6 +8,7 @@
 #include "app/kiosk_frame.hpp"
 #include "app/process_info.hpp"
 #include "render/camera.hpp"
+#include "util/elapsed.hpp"
 
 namespace gem::kiosk {
 
@@ -118,8 +119,7 @@ bool MethodProbe::step() {
                                   *picture_, *target_);
     const bool finished = drawn && drawn.value().scene_error.empty();
     glFinish();
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - begin).count();
+    const double ms = ms_since(begin);
     const int timed = frame_ - options_.warmup_frames;
     ++frame_;
     if (timed < 0) return false;

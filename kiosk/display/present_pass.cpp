@@ -14,8 +14,8 @@
 namespace gem::kiosk {
 
 PresentPass::PresentPass(gpu::Program program, Copy copy)
-    : program_(std::move(program)), copy_(copy), empty_(gpu::make_vertex_array()) {
-    if (copy_ != Copy::bytes) return;
+    : program_(std::move(program)), empty_(gpu::make_vertex_array()) {
+    if (copy != Copy::bytes) return;
     // The bytes copy reads through a sampler of its own (a sampler object's decode state
     // overrides the texture's), point-sampled at texel centres: each texel as stored, and
     // the picture itself left decoding for a cross-fade or a snapshot.

@@ -25,7 +25,7 @@ class PresentPass {
     // The copy this GL allows, bytes where it can.
     static Copy supported_copy();
     static Result<PresentPass> make(Copy copy = supported_copy());
-    Copy copy() const { return copy_; }
+    Copy copy() const { return bytes_sampler_ ? Copy::bytes : Copy::reencode; }
     // Covers the bound framebuffer's (0, 0, scanout) viewport, or only `region` of it (scanout
     // pixels, y up) when given. The picture must be the scanout turned:
     // picture_size_for(scanout, rotation_deg).
@@ -35,8 +35,7 @@ class PresentPass {
   private:
     PresentPass(gpu::Program program, Copy copy);
     gpu::Program program_;
-    Copy copy_;
-    gpu::Sampler bytes_sampler_;
+    gpu::Sampler bytes_sampler_;  // the bytes copy's; none for the re-encoding one
     gpu::VertexArray empty_;
 };
 

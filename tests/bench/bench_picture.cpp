@@ -43,6 +43,7 @@
 #include "optics/colour.hpp"
 #include "optics/material.hpp"
 #include "render/reference_render.hpp"
+#include "util/elapsed.hpp"
 
 #include "bench_support.hpp"
 
@@ -60,14 +61,14 @@ using gem::bench::median;
 
 // The screen's buffer as the DRM backend draws it: plain 8-bit RGBA, not sRGB.
 struct ScreenBuffer {
-    gem::gpu::Texture colour = gem::gpu::make_texture_2d(GL_RGBA8, 1920, 1080, GL_NEAREST);
-    gem::gpu::Framebuffer framebuffer = gem::gpu::make_framebuffer_with(colour.get());
-    glm::ivec2 size{1920, 1080};
+    ScreenBuffer(int width, int height)
+        : colour(gem::gpu::make_texture_2d(GL_RGBA8, width, height, GL_NEAREST)),
+          framebuffer(gem::gpu::make_framebuffer_with(colour.get())),
+          size(width, height) {}
+    gem::gpu::Texture colour;
+    gem::gpu::Framebuffer framebuffer;
+    glm::ivec2 size;
 };
-
-double ms_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // One present pass into `screen`, over `region` (nullopt: whole), bounded by glFinish.
 double time_present(const gem::kiosk::PresentPass& pass, const gem::gpu::RenderTarget& picture,
@@ -77,7 +78,7 @@ double time_present(const gem::kiosk::PresentPass& pass, const gem::gpu::RenderT
     const auto t0 = std::chrono::steady_clock::now();
     must(pass.draw(picture, 0, screen.size, region));
     glFinish();
-    return ms_since(t0);
+    return gem::ms_since(t0);
 }
 
 gem::gpu::PictureOptions options(int samples, double glare, int still_frames) {
@@ -188,7 +189,7 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
                 "total", "finishing", "rewritten");
     auto picture = must(gem::gpu::RenderTarget::make(w, h));
     const auto pass = must(gem::kiosk::PresentPass::make());
-    const ScreenBuffer screen;
+    const ScreenBuffer screen(w, h);
     struct Look {
         const char* name;
         int samples;
@@ -382,7 +383,7 @@ void present_copies(int frames) {
     const auto bytes = must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::bytes));
     const auto reencode =
         must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::reencode));
-    const ScreenBuffer screen;
+    const ScreenBuffer screen(w, h);
     std::vector<double> bytes_ms, reencode_ms, ratio;
     for (int f = -1; f < frames; ++f) {
         const double b = time_present(bytes, picture, screen, std::nullopt);

@@ -8,14 +8,21 @@
 //   downsample; the shader draws the same sum from four bilinear taps.
 // At sizes that halve exactly and at those the halving of a 1080-line picture gives (67 from
 // 135 and from 33, 135 from 67: not twice).
+//
+// And the pyramid whole (gpu/bloom_pass.hpp) from a picture holding one dim texel: whichever
+// texel of a 2×2 block it is, the pyramid must carry its light. The first step's taps each
+// average a 2×2 block; a point-sampled read of the picture (HdrPicture's textures are
+// point-sampled) would see one texel of each block and lose a light that falls on the others.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 #include <vector>
 
 #include <GLES3/gl3.h>
 
+#include "gpu/bloom_pass.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program_catalog.hpp"
 #include "gpu_test_support.hpp"
@@ -55,8 +62,9 @@ Level pattern(int width, int height, int seed) {
     return level;
 }
 
-gpu::Texture upload(const Level& level) {
-    gpu::Texture t = gpu::make_texture_2d(GL_RGBA16F, level.width, level.height, GL_LINEAR);
+// The level as an RGBA16F texture sampled with `filter`.
+gpu::Texture upload(const Level& level, GLenum filter = GL_LINEAR) {
+    gpu::Texture t = gpu::make_texture_2d(GL_RGBA16F, level.width, level.height, filter);
     glBindTexture(GL_TEXTURE_2D, t.get());
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, level.width, level.height, GL_RGBA, GL_FLOAT,
                     level.rgba.data());
@@ -210,6 +218,41 @@ TEST(GpuBloomUp, AStepUpIsTheTentOfNineBilinearTaps) {
     expect_step_up_is_the_tent(8, 5, 16, 10);
     expect_step_up_is_the_tent(33, 16, 67, 33);
     expect_step_up_is_the_tent(67, 33, 135, 67);
+}
+
+// The light the pyramid's top level holds from a picture of one texel of `value` at (x, y),
+// summed over the picture's area and divided by the levels: each level is a blur holding the
+// picture's energy, and the top level's sum adds them all.
+double glare_energy(int x, int y, float value) {
+    constexpr int kSize = 64;
+    Level picture{kSize, kSize, std::vector<float>(static_cast<std::size_t>(kSize) * kSize * 4)};
+    picture.rgba[(static_cast<std::size_t>(y) * kSize + x) * 4] = value;
+    // Point-sampled, as HdrPicture keeps its pictures (its passes fetch texels).
+    const gpu::Texture scene = upload(picture, GL_NEAREST);
+    auto glare = gpu::BloomPass::make(kSize, kSize);
+    EXPECT_TRUE(glare) << glare.error();
+    if (!glare) return 0.0;
+    EXPECT_TRUE(glare.value().run(scene.get()));
+    glDisable(GL_SCISSOR_TEST);
+    const int w = kSize / 2, h = kSize / 2;  // the top level
+    const gpu::Framebuffer read = gpu::make_framebuffer_with(glare.value().glare_texture());
+    std::vector<float> top(static_cast<std::size_t>(w) * h * 4);
+    glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, top.data());
+    EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));
+    double sum = 0.0;
+    for (std::size_t i = 0; i < top.size(); i += 4) sum += top[i];
+    return sum * 4.0 / glare.value().levels();  // a top-level texel covers 2×2 pixels
+}
+
+TEST(GpuBloomEnergy, EveryTexelOfABlockReachesTheGlare) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    // Dim, so Karis' weight 1 / (1 + luma) on the first step barely dims it.
+    const float value = 0.01f;
+    for (const auto& [x, y] : {std::pair{32, 32}, {33, 32}, {32, 33}, {33, 33}, {21, 40}}) {
+        const double energy = glare_energy(x, y, value);
+        EXPECT_NEAR(energy, value, 0.05 * value) << "a texel at " << x << ", " << y;
+    }
 }
 
 }  // namespace
