@@ -80,6 +80,10 @@ int run_package(const PackageOptions& options);
 int run_info(const std::string& database);
 // gemtables piece: a piece (.toml, .glb, .gltf) written as a .glb.
 int run_piece(const std::string& piece_file, const std::string& out);
+// gemtables piece FILE --check: the piece read as the kiosk reads it, and what the reader said
+// (each stone with its evidence, each repair and warning, the metal) with the load time; exit
+// status 1 when it is refused.
+int run_piece_check(const std::string& piece_file);
 int run_verify(const VerifyOptions& options);
 int run_inspect(const InspectOptions& options);
 

@@ -90,10 +90,16 @@ int main(int argc, char** argv) {
     i->add_option("database", info_db, "database (.gemdb)")->required();
 
     std::string piece_in, piece_out;
+    bool piece_check = false;
     CLI::App* p = app.add_subcommand(
-        "piece", "a piece (.toml, .glb, .gltf) written as glTF 2.0 (.glb) for a web catalogue");
+        "piece", "a piece (.toml, .glb, .gltf) written as glTF 2.0 (.glb) for a web catalogue, "
+                 "or checked (--check)");
     p->add_option("piece", piece_in, "piece description (.toml) or glTF file")->required();
-    p->add_option("-o,--out", piece_out, "the .glb to write")->required();
+    CLI::Option* piece_out_option = p->add_option("-o,--out", piece_out, "the .glb to write");
+    p->add_flag("--check", piece_check,
+                "read the piece and report, without rendering: the stones found and the "
+                "evidence for each, the repairs made, the metal, the load time")
+        ->excludes(piece_out_option);
 
     CatalogueOptions catalogue;
     CLI::App* c = app.add_subcommand(
@@ -184,7 +190,11 @@ int main(int argc, char** argv) {
     if (s->parsed()) return run_seal(seal);
     if (k->parsed()) return run_package(package);
     if (i->parsed()) return run_info(info_db);
-    if (p->parsed()) return run_piece(piece_in, piece_out);
+    if (p->parsed()) {
+        if (piece_check) return run_piece_check(piece_in);
+        if (piece_out.empty()) return fail("piece: give --out FILE.glb to write, or --check");
+        return run_piece(piece_in, piece_out);
+    }
     if (v->parsed()) return run_verify(verify);
     inspect.azimuth_deg = direction[0];
     inspect.elevation_deg = direction[1];

@@ -131,7 +131,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
         // The ring sits about as far from the stone as its own radius: that is where the
         // virtual cube's faces stand, so rays leaving off-centre see it with parallax.
-        r.cube_half_mm_ = metal->radius_mm();
+        // Never nearer than the stones reach: an exit point outside the cube would look its
+        // rays up from the cube's centre through that point (shading.glsl, environment()).
+        r.cube_half_mm_ = std::max(metal->radius_mm(), s.piece ? s.piece->radius_mm() : 0.0);
         auto ring_cube = EnvironmentCube::allocate(s.cube_face);
         if (!ring_cube) return Error{ring_cube.error()};
         r.ring_cube_ = std::make_unique<EnvironmentCube>(std::move(ring_cube).value());

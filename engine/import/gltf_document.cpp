@@ -201,6 +201,67 @@ Result<bool> decode_meshopt(tinygltf::Model& model) {
     return true;
 }
 
+// An sRGB colour component (0–1) made linear (IEC 61966-2-1).
+double srgb_to_linear(double c) {
+    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
+}
+
+// A colour as web viewers write one: a number 0xRRGGBB (three.js's Color.getHex()), a string
+// "#RRGGBB", or a list or an {r, g, b} object of 0–1 components; the first two are sRGB, the
+// last two linear, as three.js keeps them. Empty when it is none of these.
+std::optional<glm::dvec3> web_colour(const tinygltf::Value& v) {
+    const auto from_hex = [](unsigned long rgb) {
+        return glm::dvec3(srgb_to_linear(double((rgb >> 16) & 0xFF) / 255.0),
+                          srgb_to_linear(double((rgb >> 8) & 0xFF) / 255.0),
+                          srgb_to_linear(double(rgb & 0xFF) / 255.0));
+    };
+    if (v.IsNumber()) {
+        const double x = v.GetNumberAsDouble();
+        if (!(x >= 0.0 && x <= double(0xFFFFFF))) return std::nullopt;
+        return from_hex(static_cast<unsigned long>(x));
+    }
+    if (v.IsString()) {
+        std::string t = v.Get<std::string>();
+        if (!t.empty() && t[0] == '#') t.erase(0, 1);
+        if (t.size() != 6 || t.find_first_not_of("0123456789abcdefABCDEF") != std::string::npos) {
+            return std::nullopt;
+        }
+        return from_hex(std::stoul(t, nullptr, 16));
+    }
+    glm::dvec3 c(0.0);
+    if (v.IsArray() && v.ArrayLen() >= 3) {
+        for (int i = 0; i < 3; ++i) {
+            if (!v.Get(i).IsNumber()) return std::nullopt;
+            c[i] = v.Get(i).GetNumberAsDouble();
+        }
+    } else if (v.IsObject() && v.Has("r") && v.Has("g") && v.Has("b")) {
+        c = {number(v, "r", -1.0), number(v, "g", -1.0), number(v, "b", -1.0)};
+    } else {
+        return std::nullopt;
+    }
+    if (!all_finite(c) || glm::any(glm::lessThan(c, glm::dvec3(0.0)))) return std::nullopt;
+    return glm::min(c, glm::dvec3(1.0));
+}
+
+// WEBGI_materials_diamond, as the iJewel/WebGi exporters write it (DiamondMaterial's JSON):
+// refractiveIndex, dispersion (the per-channel offset of the index), color, and isDiamond,
+// which when false says the material is not a gem. Numbers outside what any gem has are left
+// out rather than believed.
+std::optional<GltfMaterial::VendorGem> vendor_gem_of(const std::string& name,
+                                                     const tinygltf::Value& v) {
+    if (!v.IsObject()) return GltfMaterial::VendorGem{name, {}, {}, {}};
+    if (v.Has("isDiamond") && v.Get("isDiamond").IsBool() && !v.Get("isDiamond").Get<bool>()) {
+        return std::nullopt;
+    }
+    GltfMaterial::VendorGem gem{name, {}, {}, {}};
+    const double n = number(v, "refractiveIndex", -1.0);
+    if (n >= 1.2 && n <= 3.5) gem.ior = n;
+    const double spread = number(v, "dispersion", -1.0);
+    if (spread >= 0.0 && spread <= 0.2) gem.spread = spread;
+    if (v.Has("color")) gem.colour = web_colour(v.Get("color"));
+    return gem;
+}
+
 GltfMaterial material_of(const tinygltf::Material& m) {
     GltfMaterial out;
     out.name = m.name;
@@ -224,6 +285,14 @@ GltfMaterial material_of(const tinygltf::Material& m) {
             out.attenuation_distance_m =
                 number(value, "attenuationDistance", std::numeric_limits<double>::infinity());
             out.thickness_m = number(value, "thicknessFactor", 0.0);
+        } else if (name == "KHR_materials_clearcoat") {
+            out.clearcoat = number(value, "clearcoatFactor", 0.0);
+            out.clearcoat_roughness = number(value, "clearcoatRoughnessFactor", 0.0);
+        } else if (name == "KHR_materials_specular") {
+            out.specular = number(value, "specularFactor", 1.0);
+            out.specular_colour = colour(value, "specularColorFactor", glm::dvec3(1.0));
+        } else if (name == "WEBGI_materials_diamond") {
+            out.vendor_gem = vendor_gem_of(name, value);
         }
     }
     return out;
@@ -439,9 +508,6 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
     const tinygltf::Primitive& p = mesh.primitives[primitive];
     const std::string what = node_name(model, node) + ", mesh '" + mesh.name + "' primitive " +
                              std::to_string(primitive);
-    if (p.mode != -1 && p.mode != TINYGLTF_MODE_TRIANGLES) {
-        return Error{what + ": not triangles (mode " + std::to_string(p.mode) + ")"};
-    }
     if (p.material >= static_cast<int>(model.materials.size())) {
         return Error{what + ": material " + std::to_string(p.material) + " does not exist"};
     }
@@ -498,7 +564,23 @@ Result<GltfPart> part_of(const tinygltf::Model& model, int node, int primitive,
     } else {
         for (std::size_t i = 0; i < part.positions.size(); ++i) indices.push_back(double(i));
     }
-    if (indices.size() % 3 != 0) return Error{what + ": an index count not a multiple of 3"};
+    if (p.mode == TINYGLTF_MODE_TRIANGLE_STRIP || p.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+        // As triangles, each wound as the strip's or fan's first (glTF 2.0, 3.7.2.1).
+        std::vector<double> list;
+        for (std::size_t i = 2; i < indices.size(); ++i) {
+            if (p.mode == TINYGLTF_MODE_TRIANGLE_FAN) {
+                list.insert(list.end(), {indices[0], indices[i - 1], indices[i]});
+            } else if (i % 2 == 0) {
+                list.insert(list.end(), {indices[i - 2], indices[i - 1], indices[i]});
+            } else {
+                list.insert(list.end(), {indices[i - 1], indices[i - 2], indices[i]});
+            }
+        }
+        indices = std::move(list);
+    } else if (indices.size() % 3 != 0) {
+        // A list cut short: the whole triangles are kept.
+        indices.resize(indices.size() / 3 * 3);
+    }
     part.triangles.resize(indices.size() / 3);
     for (std::size_t t = 0; t < part.triangles.size(); ++t) {
         for (int c = 0; c < 3; ++c) {
@@ -610,6 +692,19 @@ Result<GltfDocument> parse_gltf(std::string_view data, const std::string& name,
             if (!instances) return fail(instances.error());
             const tinygltf::Mesh& mesh = model.meshes[node.mesh];
             for (int p = 0; p < static_cast<int>(mesh.primitives.size()); ++p) {
+                const int mode = mesh.primitives[p].mode;
+                if (mode != -1 && mode != TINYGLTF_MODE_TRIANGLES &&
+                    mode != TINYGLTF_MODE_TRIANGLE_STRIP && mode != TINYGLTF_MODE_TRIANGLE_FAN) {
+                    doc.warnings.push_back(node_name(model, step.node) + ", mesh '" + mesh.name +
+                                           "' primitive " + std::to_string(p) + ": " +
+                                           (mode == TINYGLTF_MODE_POINTS ? "points"
+                                            : mode <= TINYGLTF_MODE_LINE_STRIP
+                                                ? "lines"
+                                                : "not triangles") +
+                                           " (mode " + std::to_string(mode) +
+                                           ") skipped: only triangles are drawn");
+                    continue;
+                }
                 auto part = part_of(model, step.node, p, to_scene);
                 if (!part) return fail(part.error());
                 if (!instances.value()) {

@@ -9,10 +9,11 @@
 // piece/gltf_piece.hpp.
 //
 // Refused with one message naming the file and the fault: a file that is not glTF, a truncated
-// .glb, an accessor or compressed data reaching outside its buffer or not decoding, a
-// primitive that is not triangles, a node tree with a cycle, a position, normal or transform
-// that is not a number, an extension the file requires that is not read here.
-// EXT_mesh_gpu_instancing's instances are parts of their own.
+// .glb, an accessor or compressed data reaching outside its buffer or not decoding, a node tree
+// with a cycle, a position, normal or transform that is not a number, an extension the file
+// requires that is not read here. Triangle strips and fans become triangles; points and lines
+// (curves CAD leaves in an export) are skipped with a warning. EXT_mesh_gpu_instancing's
+// instances are parts of their own.
 
 #include <array>
 #include <cstdint>
@@ -41,6 +42,20 @@ struct GltfMaterial {
     glm::dvec3 attenuation_colour{1.0};  // KHR_materials_volume
     double attenuation_distance_m = std::numeric_limits<double>::infinity();
     double thickness_m = 0.0;  // KHR_materials_volume's thicknessFactor: 0 is thin-walled
+    double clearcoat = 0.0;    // KHR_materials_clearcoat: the coat's share and its roughness
+    double clearcoat_roughness = 0.0;
+    double specular = 1.0;  // KHR_materials_specular: scales a dielectric's F0, tinted by colour
+    glm::dvec3 specular_colour{1.0};
+    // A vendor's gem material (WEBGI_materials_diamond, written by web jewellery viewers and
+    // their CAD plug-ins): the extension's name and what it says of the stone. Its fields are
+    // documented only by the exporters that write them (docs/gltf.md).
+    struct VendorGem {
+        std::string extension;
+        std::optional<double> ior;     // refractiveIndex
+        std::optional<double> spread;  // dispersion: the index's offset from green to red and blue
+        std::optional<glm::dvec3> colour;  // color, linear
+    };
+    std::optional<VendorGem> vendor_gem;
     std::vector<std::string> extensions;  // every extension the material carries
 };
 
@@ -64,6 +79,9 @@ struct GltfDocument {
     std::vector<GltfMaterial> materials;
     std::vector<GltfPart> parts;
     std::size_t images_ignored = 0;  // textures are not read (pieces shade by material factors)
+    // What was read past or repaired, one line each ("node 'Curve 3', mesh 'Rail' primitive 0:
+    // lines (mode 1) skipped: only triangles are drawn").
+    std::vector<std::string> warnings;
 };
 
 // The document as a .glb: each part one node (its transform written as a translation, rotation

@@ -5,93 +5,32 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
+#include <numbers>
 #include <numeric>
+#include <set>
 #include <tuple>
 
+#include "geometry/mesh_repair.hpp"
 #include "geometry/polyhedron.hpp"
 #include "import/gltf_document.hpp"
 #include "import/import_text.hpp"
 #include "piece/gltf_piece_writer.hpp"
+#include "piece/gltf_stone_evidence.hpp"
 #include "piece/piece_check.hpp"
 #include "render/camera.hpp"
 
 namespace gem {
 
-const std::vector<std::string> kGemWords = {
-    // English, and the abbreviations CAD exports use ("dia045", "CZ_3")
-    "diamond", "diamonds", "dia", "gem", "gems", "gemstone", "stone", "stones", "brilliant", "ruby",
-    "sapphire", "emerald", "garnet", "spinel", "topaz", "amethyst", "zirconia", "cz", "moissanite",
-    "crystal",
-    // German, French, Italian, Spanish
-    "diamant", "edelstein", "stein", "brillant", "pierre", "gemme", "diamante", "gemma", "pietra",
-    "gema", "piedra"};
-
 namespace {
 
-constexpr double kMetresToMm = 1000.0;
-// A stone with more triangles than this is refused: a cut has hundreds, and a scanned or
-// subdivided mesh would take the facet recovery minutes.
+// A part with more triangles than this is not a stone: a cut has hundreds, and a scanned or
+// subdivided mesh would take the facet recovery minutes. It is drawn as metal.
 constexpr std::size_t kMaxStoneTriangles = 100000;
 
-// A name's words: lower case, split at anything not a letter or digit and between letters and
-// digits ("Diamond_12" → diamond 12, "dia045" → dia 045).
-std::vector<std::string> words_of(const std::string& name) {
-    std::vector<std::string> out;
-    std::string word;
-    auto flush = [&] {
-        if (!word.empty()) out.push_back(word);
-        word.clear();
-    };
-    for (char ch : name) {
-        const auto c = static_cast<unsigned char>(ch);
-        if (!std::isalnum(c)) {
-            flush();
-            continue;
-        }
-        if (!word.empty() && (std::isdigit(c) != 0) !=
-                                 (std::isdigit(static_cast<unsigned char>(word.back())) != 0)) {
-            flush();
-        }
-        word.push_back(static_cast<char>(std::tolower(c)));
-    }
-    flush();
-    return out;
-}
-
-// The first gem word in `name`, or empty.
-std::string gem_word(const std::string& name) {
-    for (const std::string& w : words_of(name)) {
-        if (std::find(kGemWords.begin(), kGemWords.end(), w) != kGemWords.end()) return w;
-    }
-    return {};
-}
-
-// Why a part is a stone, or empty when it is metal.
-std::string stone_reason(const import::GltfPart& part, const import::GltfMaterial* material) {
-    if (material != nullptr) {
-        if (material->transmission > 0.0) {
-            return "its material '" + material->name + "' is transmissive";
-        }
-        for (const char* ext :
-             {"KHR_materials_ior", "KHR_materials_volume", "KHR_materials_dispersion"}) {
-            if (std::find(material->extensions.begin(), material->extensions.end(), ext) !=
-                material->extensions.end()) {
-                return "its material '" + material->name + "' carries " + ext;
-            }
-        }
-    }
-    const std::pair<const char*, std::string> names[] = {
-        {"node", part.node}, {"mesh", part.mesh}, {"material", material ? material->name : ""}};
-    for (const auto& [what, name] : names) {
-        if (!gem_word(name).empty()) return std::string("its ") + what + "'s name '" + name + "'";
-    }
-    return {};
-}
-
 // The stone's material: a built-in one its names give, else diamond; then the file's gem
-// extensions over it.
+// extensions over it (Khronos's, else a vendor's).
 Material stone_material(const import::GltfPart& part, const import::GltfMaterial* m,
-                        std::string& described) {
+                        double mm_per_unit, std::string& described) {
     Material material = *find_material("diamond");
     bool named = false;
     for (const std::string& name : {m ? m->name : std::string(), part.mesh, part.node}) {
@@ -109,15 +48,34 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
     }
     described = material.name + (named ? " (by name)" : " (the default)");
     if (m == nullptr) return material;
+    const auto& vendor = m->vendor_gem;
+    // The index and the fire, from the Khronos extensions or else the vendor's.
+    std::optional<double> ior = m->ior;
+    std::optional<double> abbe;
+    std::string ior_from = "KHR_materials_ior", fire_from = "KHR_materials_dispersion";
+    if (m->dispersion && *m->dispersion > 0.0) abbe = 20.0 / *m->dispersion;
+    if (vendor && !ior && vendor->ior) {
+        ior = vendor->ior;
+        ior_from = vendor->extension;
+    }
+    if (vendor && !abbe && vendor->spread && *vendor->spread > 0.0) {
+        // WEBGI's dispersion moves the index by ± that much from green to red and blue, so it
+        // is about half n_F − n_C: its default 0.012 gives 0.024, against diamond's 0.025
+        // (n_F 2.4354, n_C 2.4100). V_d = (n_d − 1) / (n_F − n_C).
+        abbe = ((ior ? *ior : material.index(587.6)) - 1.0) / (2.0 * *vendor->spread);
+        fire_from = vendor->extension;
+    }
     // A built-in material named by the file, whose index and fire the file repeats (as this
-    // project writes them, gltf_piece_writer.hpp), keeps its own dispersion curve and colour.
-    const bool ior_agrees = !m->ior || std::abs(*m->ior - material.index(587.6)) < 1e-3;
+    // project writes them, gltf_piece_writer.hpp, or rounded as designers type them: a
+    // "Diamond" of 2.42 or 2.4), keeps its own dispersion curve and colour. Gems a name tells
+    // apart differ by more: diamond 2.417, moissanite 2.65, cubic zirconia 2.15.
+    constexpr double kTypedIndex = 0.02;
+    const bool ior_agrees = !ior || std::abs(*ior - material.index(587.6)) < (named ? kTypedIndex : 1e-3);
     const double built_in_vd = abbe_number(material);
-    const bool fire_agrees =
-        !m->dispersion || (std::isfinite(built_in_vd) && *m->dispersion > 0.0 &&
-                           std::abs(20.0 / *m->dispersion / built_in_vd - 1.0) < 0.01);
+    const bool fire_agrees = !abbe || (std::isfinite(built_in_vd) &&
+                                       std::abs(*abbe / built_in_vd - 1.0) < 0.01);
     const bool as_built_in = named && ior_agrees && fire_agrees;
-    if (as_built_in && (m->ior || m->dispersion)) {
+    if (as_built_in && (ior || abbe)) {
         described += ", its index and fire as the file gives them";
     }
     if (!as_built_in && m->transmission > 0.0) {
@@ -125,24 +83,28 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
         // thesis' stone colour.
         material.body_colour = glm::clamp(m->base_colour, 0.0, 1.0);
     }
-    char text[160];
-    if (!as_built_in && m->ior && std::abs(*m->ior - material.index()) > 1e-3) {
+    if (vendor && vendor->colour && glm::any(glm::lessThan(*vendor->colour, glm::dvec3(0.999)))) {
+        material.body_colour = *vendor->colour;
+        described += ", its colour from " + vendor->extension;
+    }
+    char text[200];
+    if (!as_built_in && ior && std::abs(*ior - material.index()) > 1e-3) {
         // The file's index over the built-in one: no dispersion unless the file gives it.
-        material.dispersion = Dispersion::constant_index(*m->ior);
-        std::snprintf(text, sizeof text, ", n %.3f from KHR_materials_ior", *m->ior);
+        material.dispersion = Dispersion::constant_index(*ior);
+        std::snprintf(text, sizeof text, ", n %.3f from %s", *ior, ior_from.c_str());
         described += text;
     }
-    if (!as_built_in && m->dispersion && *m->dispersion > 0.0) {
+    if (!as_built_in && abbe) {
         // KHR_materials_dispersion: dispersion = 20 / V_d, and n(λ) = A + B / λ² with
         // B = (n_d − 1) / (V_d (λ_F⁻² − λ_C⁻²)), A = n_d − B / λ_d² (the extension's
         // specification; λ_F 486.1, λ_d 587.6, λ_C 656.3 nm, here in µm).
-        const double nd = m->ior ? *m->ior : material.index();
-        const double vd = 20.0 / *m->dispersion;
+        const double nd = ior ? *ior : material.index();
+        const double vd = *abbe;
         const double f = 0.4861, d = 0.5876, c = 0.6563;
         const double b = (nd - 1.0) / (vd * (1.0 / (f * f) - 1.0 / (c * c)));
         material.dispersion.kind = Dispersion::Kind::cauchy;
         material.dispersion.coef = {nd - b / (d * d), b};
-        std::snprintf(text, sizeof text, ", Abbe number %.1f from KHR_materials_dispersion", vd);
+        std::snprintf(text, sizeof text, ", Abbe number %.1f from %s", vd, fire_from.c_str());
         described += text;
     }
     if (std::isfinite(m->attenuation_distance_m) && m->attenuation_distance_m > 0.0) {
@@ -150,7 +112,7 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
         for (int i = 0; i < 3; ++i) {
             const double c = std::clamp(m->attenuation_colour[i], 1e-6, 1.0);
             material.absorption_per_mm[i] =
-                -std::log(c) / (m->attenuation_distance_m * kMetresToMm);
+                -std::log(c) / (m->attenuation_distance_m * mm_per_unit);
         }
         described += ", absorption from KHR_materials_volume";
     }
@@ -223,54 +185,209 @@ double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
         {kPlanarRelative, 4.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
 }
 
-void add_metal(const import::GltfPart& part, const import::GltfMaterial* m, MetalMesh& metal,
-               bool& first_metal, std::vector<std::string>* log) {
+
+// The piece's metal as the parts give it: every metal triangle placed in millimetres, and the
+// area each material covers, so that the piece's one metal is the one most of it is made of.
+struct MetalParts {
+    std::map<int, double> area_by_material;  // material index (-1: the default) → mm²
+    std::map<int, std::string> first_node;   // for the log line
+    std::size_t triangles = 0;
+    std::size_t zero_area = 0;
+};
+
+void add_metal(const import::GltfPart& part, const std::vector<std::array<std::uint32_t, 3>>& tris,
+               double mm_per_unit, MetalMesh& metal, MetalParts& parts) {
     const glm::dmat4& to = part.to_scene;
     const bool mirrored = glm::determinant(glm::dmat3(to)) < 0.0;
     std::vector<glm::dvec3> placed(part.positions.size());
     for (std::size_t i = 0; i < placed.size(); ++i) {
-        placed[i] = glm::dvec3(to * glm::dvec4(part.positions[i], 1.0)) * kMetresToMm;
+        placed[i] = glm::dvec3(to * glm::dvec4(part.positions[i], 1.0)) * mm_per_unit;
     }
     // The file's normals, taken to the scene by the inverse transpose; without them, corners
     // share an area-weighted average of their faces' normals, per vertex as the file splits
     // them (a crease keeps its edge).
     std::vector<glm::dvec3> normal(placed.size(), glm::dvec3(0.0));
-    if (part.normals.size() == placed.size()) {
+    const bool given = part.normals.size() == placed.size();
+    if (given) {
         const glm::dmat3 to_normal = glm::transpose(glm::inverse(glm::dmat3(to)));
         for (std::size_t i = 0; i < placed.size(); ++i) normal[i] = to_normal * part.normals[i];
-    } else {
-        for (auto t : part.triangles) {
-            if (mirrored) std::swap(t[1], t[2]);
-            const glm::dvec3 g =
-                glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
-            for (std::uint32_t c : t) normal[c] += g;
+    }
+    // Only the corners the triangles use are kept: a part split into stones and metal, or a
+    // mesh whose unused vertices fill a large buffer, adds no more than it draws.
+    // Used corners keep the file's order (what this project writes reads back as it was).
+    constexpr std::uint32_t kUnused = ~0u;
+    std::vector<std::uint32_t> index(placed.size(), kUnused);
+    std::vector<std::array<std::uint32_t, 3>> kept;
+    kept.reserve(tris.size());
+    double area = 0.0;
+    for (auto t : tris) {
+        if (mirrored) std::swap(t[1], t[2]);
+        const glm::dvec3 g =
+            glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
+        // A triangle with no area draws nothing and has no normal to give its corners.
+        if (!(glm::length(g) > 1e-12)) {
+            ++parts.zero_area;
+            continue;
+        }
+        area += 0.5 * glm::length(g);
+        for (std::uint32_t c : t) {
+            if (!given) normal[c] += g;
+            index[c] = 0;
+        }
+        kept.push_back(t);
+    }
+    for (std::size_t from = 0; from < index.size(); ++from) {
+        if (index[from] == kUnused) continue;
+        index[from] = static_cast<std::uint32_t>(metal.positions.size());
+        metal.positions.emplace_back(placed[from]);
+        const double len = glm::length(normal[from]);
+        metal.normals.emplace_back(len > 0.0 ? glm::vec3(normal[from] / len) : glm::vec3(0, 1, 0));
+    }
+    for (const auto& t : kept) {
+        for (std::uint32_t c : t) metal.indices.push_back(index[c]);
+    }
+    parts.triangles += kept.size();
+    parts.area_by_material[part.material] += area;
+    parts.first_node.try_emplace(part.material, part.node);
+}
+
+// The metal's F0 and roughness from a glTF material: F0 mixed from the dielectric's to the base
+// colour by the metalness. KHR_materials_specular scales and tints the dielectric's F0 (its
+// specification: min(F0 · specularColor, 1) · specular); a clear coat is a second, dielectric
+// layer whose 4 % reflection one GGX lobe cannot hold beside the metal's, so it is left out.
+void set_metal_material(const import::GltfMaterial* m, MetalMesh& metal) {
+    const glm::dvec3 base_colour = m ? m->base_colour : glm::dvec3(1.0);
+    const double metallic = std::clamp(m ? m->metallic : 1.0, 0.0, 1.0);
+    glm::dvec3 dielectric(0.04);
+    if (m != nullptr) {
+        const double n = m->ior.value_or(1.5);
+        const double f = (n - 1.0) / (n + 1.0);
+        dielectric = glm::min(glm::dvec3(f * f) * m->specular_colour, glm::dvec3(1.0)) * m->specular;
+    }
+    metal.f0 = glm::vec3(glm::mix(dielectric, glm::clamp(base_colour, 0.0, 1.0), metallic));
+    metal.roughness = static_cast<float>(std::clamp(m ? m->roughness : 1.0, 0.0, 1.0));
+}
+
+// A stone from one connected piece of a part's triangles, repaired where CAD left it dirty:
+// triangles with no area dropped (T-junctions split), triangles wound against their
+// neighbours turned, and an open stone closed: by the planes of the facets it kept where they
+// close it as it was (a convex stone that lost a few triangles), else by filling its holes (a
+// whole facet lost, or a stone that is not convex). `repairs` says what was done.
+Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
+                             std::vector<std::array<std::uint32_t, 3>> tris, const std::string& name,
+                             double tolerance, std::string& repairs) {
+    const auto said = [&](const std::string& what) { repairs += "; " + what; };
+    if (const std::size_t n = drop_zero_area_triangles(corners, tris, tolerance); n > 0) {
+        said(std::to_string(n) + " triangle" + (n == 1 ? "" : "s") + " with no area dropped");
+    }
+    auto stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
+    if (!stone && stone.error().starts_with("mesh is not 2-manifold or not consistently wound")) {
+        auto turned = orient_consistently(tris);
+        if (!turned) return Error{stone.error() + ", and " + turned.error()};
+        said(std::to_string(turned.value()) + " triangles turned to wind as their neighbours");
+        stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
+    }
+    if (!stone && stone.error().starts_with("mesh is open")) {
+        const std::string open = stone.error().substr(stone.error().find(": ") + 2);
+        auto by_planes = stone_closed_by_its_planes(corners, tris, name, tolerance);
+        if (by_planes) {
+            said("open (" + open + "): closed by the planes of its facets");
+            return by_planes;
+        }
+        auto filled = fill_holes(corners, tris);
+        if (!filled) return Error{stone.error() + ", and " + filled.error()};
+        drop_zero_area_triangles(corners, tris, tolerance);
+        stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
+        if (!stone) return Error{"mesh is open (" + open + "), and filled it " + stone.error()};
+        said("open (" + open + "): " + std::to_string(filled.value()) + " hole" +
+             (filled.value() == 1 ? "" : "s") + " filled");
+    }
+    return stone;
+}
+
+// How many millimetres one of the file's units is. glTF says metres, and most exporters
+// convert; some write CAD's millimetres as they are, which makes a 20 mm ring 20 m across. A
+// piece of jewellery is between a 0.3 mm melee and a 400 mm necklace: metres when that makes
+// it so, else millimetres when that does.
+double millimetres_per_unit(const import::GltfDocument& doc, std::string& why) {
+    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
+    for (const import::GltfPart& part : doc.parts) {
+        for (const glm::dvec3& p : part.positions) {
+            const glm::dvec3 q(part.to_scene * glm::dvec4(p, 1.0));
+            lo = glm::min(lo, q);
+            hi = glm::max(hi, q);
         }
     }
-    const auto base = static_cast<std::uint32_t>(metal.positions.size());
-    for (std::size_t i = 0; i < placed.size(); ++i) {
-        metal.positions.emplace_back(placed[i]);
-        const double len = glm::length(normal[i]);
-        metal.normals.emplace_back(len > 0.0 ? glm::vec3(normal[i] / len) : glm::vec3(0, 1, 0));
+    const double across = glm::length(hi - lo);
+    const auto jewellery = [](double mm) { return mm >= 0.3 && mm <= 400.0; };
+    if (!(across > 0.0) || jewellery(across * 1000.0) || !jewellery(across)) return 1000.0;
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "read in millimetres, not glTF's metres: the piece is %.4g units across, and "
+                  "no piece of jewellery is %.4g m",
+                  across, across);
+    why = text;
+    return 1.0;
+}
+
+// The piece turned so that its centre stone's table faces +y, the piece's up, where the file
+// put it facing another axis (CAD's z up, written without turning). Only a stone whose largest
+// facet is half as large again as any other (a table) says which way is up, and only when it
+// lies within 30° of an axis other than +y. Returns what was done, or empty.
+std::string turn_table_up(Piece& piece) {
+    if (piece.stones.empty()) return {};
+    const Stone& hero = piece.stone_of(0);
+    double largest = 0.0, second = 0.0;
+    glm::dvec3 table(0.0);
+    for (const Facet& f : hero.facets) {
+        glm::dvec3 area(0.0);
+        for (std::size_t i = 0; i < f.loop.size(); ++i) {
+            area += glm::cross(hero.vertices[f.loop[i]],
+                               hero.vertices[f.loop[(i + 1) % f.loop.size()]]);
+        }
+        const double a = 0.5 * glm::length(area);
+        if (a > largest) {
+            second = largest;
+            largest = a;
+            table = f.plane.n;
+        } else {
+            second = std::max(second, a);
+        }
     }
-    for (auto t : part.triangles) {
-        if (mirrored) std::swap(t[1], t[2]);
-        for (std::uint32_t c : t) metal.indices.push_back(base + c);
+    if (!(largest > 1.5 * second)) return {};
+    const glm::dvec3 up = glm::normalize(piece.stones[0].placement.rotation * table);
+    const double cos30 = std::cos(std::numbers::pi / 6.0);
+    if (up.y > cos30) return {};
+    glm::dmat3 turn(1.0);
+    std::string axis;
+    // Columns of glm matrices: turn * up = +y.
+    if (up.z > cos30) {
+        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
+        axis = "+z";
+    } else if (up.z < -cos30) {
+        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, -1, 0));
+        axis = "-z";
+    } else if (up.x > cos30) {
+        turn = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
+        axis = "+x";
+    } else if (up.x < -cos30) {
+        turn = glm::dmat3(glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));
+        axis = "-x";
+    } else if (up.y < -cos30) {
+        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, -1));
+        axis = "-y";
+    } else {
+        return {};
     }
-    // One metal for the piece (MetalMesh has one F0): the first part's; a second metal is said.
-    const glm::dvec3 base_colour = m ? m->base_colour : glm::dvec3(1.0);
-    const double metallic = m ? m->metallic : 1.0;
-    const glm::vec3 f0 = glm::vec3(glm::mix(glm::dvec3(0.04), base_colour, metallic));
-    const float roughness = static_cast<float>(std::clamp(m ? m->roughness : 1.0, 0.0, 1.0));
-    if (first_metal) {
-        metal.f0 = f0;
-        metal.roughness = roughness;
-        first_metal = false;
-    } else if (log != nullptr && (glm::length(f0 - metal.f0) > 1e-3f ||
-                                  std::abs(roughness - metal.roughness) > 1e-3f)) {
-        log->push_back("metal of node '" + part.node + "' (material '" +
-                       (m ? m->name : std::string("default")) +
-                       "') drawn as the piece's first metal: a piece has one metal");
+    for (PieceStone& s : piece.stones) {
+        s.placement.rotation = turn * s.placement.rotation;
+        s.placement.position = turn * s.placement.position;
     }
+    const glm::mat3 t(turn);
+    for (glm::vec3& p : piece.metal.positions) p = t * p;
+    for (glm::vec3& n : piece.metal.normals) n = t * n;
+    return "turned so that up is +y: the centre stone's table faced " + axis +
+           " (the file was written with another axis up)";
 }
 
 }  // namespace
@@ -290,45 +407,71 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     auto read = import::parse_gltf(bytes, name, base);
     if (!read) return Error{read.error()};
     const import::GltfDocument& doc = read.value();
-    const auto fail = [&](const std::string& why) { return Error{name + ": " + why}; };
+    const std::string file = std::filesystem::path(name).filename().string();
+    const auto warn = [&](const std::string& what) {
+        if (log != nullptr) log->push_back("warning: " + file + ": " + what);
+    };
+    for (const std::string& w : doc.warnings) warn(w);
     Piece piece;
     piece.name = std::filesystem::path(name).stem().string();
-    bool first_metal = true;
+    std::string units;
+    const double mm_per_unit = millimetres_per_unit(doc, units);
+    if (!units.empty()) warn(units);
+    MetalParts metal_parts;
     // Kinds made from a mesh's own frame, by (mesh, primitive, connected piece, scale).
     std::map<std::tuple<int, int, std::size_t, double>, std::size_t> shared_kinds;
+    // Pieces that did not become stones, by mesh and primitive and connected piece: another
+    // instance of the same mesh is not tried again.
+    std::set<std::tuple<int, int, std::size_t>> not_stones;
+    std::string demoted;  // the first stone drawn as metal, and why: said if no stone is left
     // How far quantised positions may stand from where the piece had them: half a step along
     // each axis, for the stone and for the metal against it.
     double rounding_mm = 0.0;
     for (const import::GltfPart& part : doc.parts) {
         const double node_scale = std::cbrt(std::abs(glm::determinant(glm::dmat3(part.to_scene))));
         rounding_mm =
-            std::max(rounding_mm, std::sqrt(3.0) * part.position_step * node_scale * kMetresToMm);
+            std::max(rounding_mm, std::sqrt(3.0) * part.position_step * node_scale * mm_per_unit);
         const import::GltfMaterial* material =
             part.material >= 0 ? &doc.materials[static_cast<std::size_t>(part.material)] : nullptr;
         // The manifest beside the file wins over the file's materials and names.
         const std::vector<std::string> names = {part.node, part.mesh,
                                                 material ? material->name : std::string()};
         const GltfManifest::Stone* listed = manifest ? manifest->stone_named(names) : nullptr;
+        const bool listed_metal = listed == nullptr && manifest && manifest->metal_named(names);
+        const StoneEvidence evidence = stone_evidence(part, material);
         std::string reason;
         if (listed != nullptr) {
             reason = "the manifest " + manifest->file.filename().string() + " names it '" +
                      listed->name + "'";
-        } else if (manifest == nullptr || !manifest->metal_named(names)) {
-            reason = stone_reason(part, material);
+        } else {
+            reason = evidence.describe();
         }
-        if (reason.empty()) {
-            add_metal(part, material, piece.metal, first_metal, log);
+        if (listed_metal || (listed == nullptr && evidence.metal())) {
+            add_metal(part, part.triangles, mm_per_unit, piece.metal, metal_parts);
             continue;
         }
-        const std::string who = "node '" + part.node + "' (mesh '" + part.mesh + "')";
         std::vector<std::uint32_t> weld;
         const auto pieces = connected_pieces(part.positions, part.triangles, weld);
+        const std::string who = "node '" + part.node + "' (mesh '" + part.mesh + "')";
+        // A part with signs both ways: its shape decides, piece by piece.
+        const bool by_shape = listed == nullptr && !evidence.stone();
         const auto rigid = import::rotation_and_scale(part.to_scene);
         for (std::size_t c = 0; c < pieces.size(); ++c) {
             const auto& tris = pieces[c];
+            const auto mesh_key = std::make_tuple(part.mesh_index, part.primitive, c);
+            if (not_stones.contains(mesh_key)) {
+                add_metal(part, tris, mm_per_unit, piece.metal, metal_parts);
+                continue;
+            }
             if (tris.size() > kMaxStoneTriangles) {
-                return fail(who + ": a stone of " + std::to_string(tris.size()) +
-                            " triangles (at most " + std::to_string(kMaxStoneTriangles) + ")");
+                if (!by_shape) {
+                    warn(who + ": a stone of " + std::to_string(tris.size()) +
+                         " triangles is more than a cut has (at most " +
+                         std::to_string(kMaxStoneTriangles) + "): drawn as metal");
+                }
+                not_stones.insert(mesh_key);
+                add_metal(part, tris, mm_per_unit, piece.metal, metal_parts);
+                continue;
             }
             // Its vertices, in the mesh's frame or, mirrored or unevenly scaled, the piece's.
             std::vector<glm::dvec3> corners;
@@ -355,14 +498,14 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             glm::dvec3 centre(0.0);
             for (const glm::dvec3& p : corners) centre += p;
             centre /= static_cast<double>(corners.size());
-            const double scale = (rigid ? rigid->second : 1.0) * kMetresToMm;
+            const double scale = (rigid ? rigid->second : 1.0) * mm_per_unit;
             for (glm::dvec3& p : corners) p = (p - centre) * scale;
             Placement at;
             if (rigid) {
                 at.rotation = rigid->first;
-                at.position = glm::dvec3(part.to_scene * glm::dvec4(centre, 1.0)) * kMetresToMm;
+                at.position = glm::dvec3(part.to_scene * glm::dvec4(centre, 1.0)) * mm_per_unit;
             } else {
-                at.position = centre * kMetresToMm;
+                at.position = centre * mm_per_unit;
             }
             // The scale as a key, rounded to float precision: a rotation written as a float
             // quaternion, or a scale of 0.99999994, is the same stone.
@@ -374,27 +517,32 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             } else {
                 std::string stone_name = part.mesh.empty() ? part.node : part.mesh;
                 const double tolerance = planar_tolerance(stored, part.position_step);
-                auto stone = stone_from_triangles(corners, local, stone_name, 1e-6, tolerance);
-                std::string closed;
-                if (!stone && stone.error().starts_with("mesh is open")) {
-                    // An export that lost a few triangles of a convex stone: closed by the
-                    // planes of the facets it kept, said in the log.
-                    auto whole = stone_closed_by_its_planes(corners, local, stone_name, tolerance);
-                    if (!whole) {
-                        return fail(who + ": " + stone.error() + ", and " + whole.error());
+                std::string repairs;
+                auto stone = repaired_stone(corners, local, stone_name, tolerance, repairs);
+                // A part with signs both ways is a stone when it is shaped as one: closed, and
+                // convex or of few facets (a cut has tens; a cast setting thousands).
+                const bool shaped =
+                    stone && (stone.value().convex || stone.value().facets.size() <= 256);
+                if (!stone || (by_shape && !shaped)) {
+                    if (!by_shape) {
+                        const std::string why = who + ": not a stone that can be traced (" +
+                                                stone.error() + "): drawn as metal";
+                        warn(why);
+                        if (demoted.empty()) demoted = why;
                     }
-                    const std::string& why = stone.error();  // "mesh is open: N boundary edges"
-                    closed = "; open (" + why.substr(why.find(": ") + 2) +
-                             "): closed by the planes of its facets";
-                    stone = std::move(whole);
+                    not_stones.insert(mesh_key);
+                    add_metal(part, tris, mm_per_unit, piece.metal, metal_parts);
+                    continue;
                 }
-                if (!stone) return fail(who + ": " + stone.error());
+                if (by_shape) reason += "; its shape, closed and " +
+                                        std::string(stone.value().convex ? "convex" : "of few facets");
+                if (!repairs.empty()) warn(who + ": repaired" + repairs);
                 std::string described;
                 if (listed != nullptr && listed->material) {
                     stone.value().material = *listed->material;
                     described = listed->material->name + " (the manifest)";
                 } else {
-                    stone.value().material = stone_material(part, material, described);
+                    stone.value().material = stone_material(part, material, mm_per_unit, described);
                 }
                 piece.kinds.push_back(std::move(stone).value());
                 if (rigid) shared_kinds[key] = kind;
@@ -412,16 +560,58 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                             shape += step;
                         }
                     }
-                    log->push_back("stone " + who + ": recognised as " + reason + "; " + described +
-                                   shape + closed);
+                    char facets[64];
+                    std::snprintf(facets, sizeof facets, "; %zu facets",
+                                  piece.kinds.back().facets.size());
+                    log->push_back("stone " + who + ": recognised as a stone by " + reason + "; " +
+                                   described + facets + shape);
                 }
             }
             piece.stones.push_back(
                 {kind, at, "stone " + std::to_string(piece.stones.size() + 1) + " (" + who + ")"});
         }
     }
-    if (piece.stones.empty())
-        return fail("no stone found (see config/pieces/README.md: how a stone is recognised)");
+    if (log != nullptr && metal_parts.area_by_material.empty()) {
+        log->push_back("metal: none (loose stones)");
+    }
+    if (piece.stones.empty() && !demoted.empty()) return Error{name + ": no stone left: " + demoted};
+    if (piece.stones.empty()) {
+        return Error{name + ": no stone found (see config/pieces/README.md: how a stone is "
+                            "recognised; a manifest beside the file can name them)"};
+    }
+    // The piece's one metal is the material that covers the most of it.
+    if (!metal_parts.area_by_material.empty()) {
+        const auto most = std::max_element(
+            metal_parts.area_by_material.begin(), metal_parts.area_by_material.end(),
+            [](const auto& a, const auto& b) { return a.second < b.second; });
+        const import::GltfMaterial* m =
+            most->first >= 0 ? &doc.materials[static_cast<std::size_t>(most->first)] : nullptr;
+        set_metal_material(m, piece.metal);
+        const std::string metal_name = m ? "'" + m->name + "'" : std::string("the default");
+        if (log != nullptr) {
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "metal: %zu triangles in %zu material(s), drawn as %s: F0 (%.3f, %.3f, "
+                          "%.3f), roughness %.2f",
+                          metal_parts.triangles, metal_parts.area_by_material.size(),
+                          metal_name.c_str(), piece.metal.f0.x, piece.metal.f0.y, piece.metal.f0.z,
+                          piece.metal.roughness);
+            log->push_back(text);
+        }
+        if (metal_parts.area_by_material.size() > 1) {
+            warn("the metal is drawn all in material " + metal_name +
+                 ", the one that covers most of it (a piece has one metal): " +
+                 std::to_string(metal_parts.area_by_material.size() - 1) +
+                 " other material(s) drawn as it");
+        }
+        if (m != nullptr && m->clearcoat > 0.0) {
+            warn("material " + metal_name + "'s clear coat is left out (the metal below shows)");
+        }
+        if (metal_parts.zero_area > 0) {
+            warn(std::to_string(metal_parts.zero_area) +
+                 " metal triangle(s) with no area dropped");
+        }
+    }
     // The largest stone is the centre, the picture's hero; among stones of one size (within
     // the file's rounding) the first.
     const auto radius = [&](const PieceStone& s) {
@@ -432,11 +622,57 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                                            return radius(a) * (1.0 + 1e-6) < radius(b);
                                        });
     std::rotate(piece.stones.begin(), hero, hero + 1);
+    if (const std::string turned = turn_table_up(piece); !turned.empty()) warn(turned);
+    // The centre stone at the piece's origin, as the settings place it (settings.hpp): CAD
+    // puts the origin at the finger's centre, and the GPU's virtual cube, which holds what the
+    // stones see of the metal, is taken from the origin (frame_renderer.hpp); from the finger's
+    // centre it sees the inside of the shank, and a stone 13 mm above it came out black.
+    // A file whose origin lies within the centre stone (this project's own, a loose stone's)
+    // keeps it.
+    const glm::dvec3 centre = piece.stones.front().placement.position;
+    if (glm::length(centre) > bounding_radius(piece.stone_of(0).vertices)) {
+        for (PieceStone& s : piece.stones) s.placement.position -= centre;
+        for (glm::vec3& p : piece.metal.positions) p -= glm::vec3(centre);
+        piece.file_origin_mm = centre;
+    }
+    if (log != nullptr) {
+        // Stones merged into one mesh say the same line each: said once, with their number.
+        std::vector<std::string> said;
+        std::size_t repeats = 0;
+        for (std::string& line : *log) {
+            if (!said.empty() && line == said.back()) {
+                ++repeats;
+                continue;
+            }
+            if (repeats > 0) said.back() += " (" + std::to_string(repeats + 1) + " stones alike)";
+            repeats = 0;
+            said.push_back(std::move(line));
+        }
+        if (repeats > 0) said.back() += " (" + std::to_string(repeats + 1) + " stones alike)";
+        *log = std::move(said);
+    }
     if (log != nullptr && doc.images_ignored > 0) {
         log->push_back(std::to_string(doc.images_ignored) +
                        " texture image(s) ignored: a piece is shaded by its materials' factors");
     }
-    if (auto ok = check_piece(piece, rounding_mm); !ok) return fail(ok.error());
+    // What a jeweller's check finds is said, not refused: CAD seats are often not cut, and a
+    // loose stone has no metal.
+    // A band of 52 stones whose seats are all uncut says so once, with a count.
+    std::map<std::string, std::vector<std::string>> alike;
+    for (const std::string& problem : piece_problems(piece, rounding_mm)) {
+        const char* kinds[] = {"floats off its seat", "the metal cuts", "intersects"};
+        std::string kind = problem;
+        for (const char* k : kinds) {
+            if (problem.find(k) != std::string::npos) kind = k;
+        }
+        alike[kind].push_back(problem);
+    }
+    for (const auto& [kind, problems] : alike) {
+        warn(problems.front() + (problems.size() > 1
+                                     ? " (and " + std::to_string(problems.size() - 1) +
+                                           " more stones alike)"
+                                     : std::string()));
+    }
     return piece;
 }
 

@@ -45,6 +45,10 @@ struct Piece {
     std::vector<PieceStone> stones;        // the first is the centre stone, the hero of the picture
     MetalMesh metal;
     std::vector<Hold> holds;
+    // The point of the file a piece was read from (glTF, millimetres, its axes) that is now the
+    // piece's origin: where its centre stone was, when the file's origin lay outside it (CAD's
+    // finger centre). Zero for pieces made here and files whose origin is the stone's.
+    glm::dvec3 file_origin_mm{0.0};
 
     const Stone& stone_of(std::size_t i) const { return kinds[stones[i].kind]; }
     // Radius of the sphere about the piece's origin that holds every stone and the metal.

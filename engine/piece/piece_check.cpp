@@ -56,6 +56,13 @@ bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const
 }
 
 Result<bool> check_piece(const Piece& piece, double rounding_mm) {
+    const std::vector<std::string> problems = piece_problems(piece, rounding_mm);
+    if (!problems.empty()) return Error{problems.front()};
+    return true;
+}
+
+std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm) {
+    std::vector<std::string> problems;
     const double seat = kSeatMm + rounding_mm, held = kHeldMm + rounding_mm;
     auto name = [&](std::size_t i) {
         return "stone " + std::to_string(i + 1) + " ('" + piece.stones[i].role + "')";
@@ -64,7 +71,7 @@ Result<bool> check_piece(const Piece& piece, double rounding_mm) {
         for (std::size_t j = i + 1; j < piece.stones.size(); ++j) {
             if (stones_intersect(piece.stone_of(i), piece.stones[i].placement, piece.stone_of(j),
                                  piece.stones[j].placement)) {
-                return Error{name(j) + " intersects " + name(i)};
+                problems.push_back(name(j) + " intersects " + name(i));
             }
         }
     }
@@ -137,17 +144,16 @@ Result<bool> check_piece(const Piece& piece, double rounding_mm) {
             if (corner_inside[k]) deepest = std::max(deepest, corner_distance[k]);
         }
         if (deepest > seat + 1e-6) {
-            return Error{"the metal cuts " + std::to_string(deepest) + " mm into " + name(i) +
-                         " (a seat is at most " + std::to_string(seat) + " mm)"};
-        }
-        if (!(nearest <= held)) {
-            return Error{name(i) + " floats off its seat: the nearest metal is " +
-                         (std::isfinite(nearest) ? std::to_string(nearest) + " mm away"
-                                                 : std::string("beyond the stone")) +
-                         " (at most " + std::to_string(held) + " mm)"};
+            problems.push_back("the metal cuts " + std::to_string(deepest) + " mm into " +
+                               name(i) + " (a seat is at most " + std::to_string(seat) + " mm)");
+        } else if (!(nearest <= held)) {
+            problems.push_back(name(i) + " floats off its seat: the nearest metal is " +
+                               (std::isfinite(nearest) ? std::to_string(nearest) + " mm away"
+                                                       : std::string("beyond the stone")) +
+                               " (at most " + std::to_string(held) + " mm)");
         }
     }
-    return true;
+    return problems;
 }
 
 }  // namespace gem

@@ -6,6 +6,9 @@
 // by its vertices and the stone's corners: metal that passes through a stone between them (an
 // edge across a facet) is not seen here; the settings' tests cast rays for that.
 
+#include <string>
+#include <vector>
+
 #include "piece/piece.hpp"
 #include "util/result.hpp"
 
@@ -15,8 +18,12 @@ namespace gem {
 inline constexpr double kHeldMm = 0.1;
 
 // `rounding_mm`: how far the file the piece was read from may have moved its corners (a
-// quantised glTF's step), allowed on top of the seat and the hold.
+// quantised glTF's step), allowed on top of the seat and the hold. The first problem found.
 Result<bool> check_piece(const Piece& piece, double rounding_mm = 0.0);
+
+// Every problem, one line each: what a piece from CAD is shown with, as warnings (an uncut
+// seat, a loose stone with no metal), where a piece description is refused.
+std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm = 0.0);
 
 // Whether the two placed stones share any volume (their surfaces cross, or one holds the
 // other); stones that only touch do not.

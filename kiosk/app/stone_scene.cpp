@@ -6,6 +6,7 @@
 #include "gpu/stone_method.hpp"
 #include "gpu/stone_models.hpp"
 #include "piece/metal_obj.hpp"
+#include "render/camera.hpp"
 #include "scene/scene.hpp"
 #include "tables/reader.hpp"
 
@@ -134,9 +135,18 @@ const Framing& StoneScene::framing(glm::ivec2 size) const {
     if (size == framed_size_) return framing_;
     // The hero is the loose stone, or a piece's centre stone; everything else is "ring".
     std::vector<glm::dvec3> stone = this->stone().vertices;
-    // A piece of one kind of stone (a band) has no hero: the whole piece is framed, as tight
-    // as it fits (a share no stone reaches).
-    const bool hero = !piece_ || piece_->kinds.size() > 1 || piece_->stones.size() == 1;
+    // A piece whose centre stone is no larger than the rest (a band, three equal stones, a
+    // file's stones merged into one mesh, each a kind of its own) has no hero: the whole piece
+    // is framed, as tight as it fits (a share no stone reaches). A centre stone a tenth larger
+    // than every other is the hero.
+    bool hero = !piece_ || piece_->stones.size() == 1;
+    if (piece_ && !hero) {
+        const double centre = bounding_radius(piece_->stone_of(0).vertices);
+        hero = true;
+        for (std::size_t i = 1; i < piece_->stones.size() && hero; ++i) {
+            hero = centre > 1.1 * bounding_radius(piece_->stone_of(i).vertices);
+        }
+    }
     const double share = hero ? stone_share_ : 1e-3;
     const MetalMesh& metal = piece_ ? piece_->metal : ring_;
     std::vector<glm::dvec3> ring(metal.positions.begin(), metal.positions.end());

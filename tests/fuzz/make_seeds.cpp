@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "../support/cad_corpus.hpp"
 #include "../support/draco_mesh.hpp"
 #include "../support/glb_writer.hpp"
 #include "optics/material.hpp"
@@ -172,6 +173,16 @@ void write_gltf_seeds(const std::filesystem::path& dir) {
     } else {
         std::printf("gem_fuzz_seeds: no meshopt seed (gltfpack did not run)\n");
     }
+    // The corpus of files made as other tools make them (cad_corpus.hpp), all but the large
+    // ones: a seed of megabytes slows every mutation.
+    const std::filesystem::path cad = dir / "cad-corpus";
+    for (const auto& f : gem::test_support::cad::write_corpus(cad)) {
+        if (std::filesystem::file_size(f.path) > 512 * 1024) continue;
+        std::filesystem::copy_file(f.path, dir / ("cad-" + f.name),
+                                   std::filesystem::copy_options::overwrite_existing);
+        ++seeds;
+    }
+    std::filesystem::remove_all(cad);
     std::printf("gem_fuzz_seeds: wrote %d glTF seeds to %s\n", seeds, dir.c_str());
 }
 

@@ -43,6 +43,23 @@ class Glb {
         doc_["scenes"][0]["nodes"].push_back(i);
         return i;
     }
+    // A node that is not a root of the scene (a child another node lists); its index.
+    int child(json n) {
+        doc_["nodes"].push_back(std::move(n));
+        return static_cast<int>(doc_["nodes"].size()) - 1;
+    }
+    // A mesh of the primitives given as JSON (from the accessors below); its index.
+    int mesh_of(const std::string& name, json primitives) {
+        doc_["meshes"].push_back({{"name", name}, {"primitives", std::move(primitives)}});
+        return static_cast<int>(doc_["meshes"].size()) - 1;
+    }
+    // Accessors of float vec3s (positions, normals) and of uint32 indices.
+    int vec3s(const std::vector<glm::dvec3>& v) {
+        return accessor(floats(v), 5126, "VEC3", v.size());
+    }
+    int indices(const std::vector<std::uint32_t>& v) {
+        return accessor(bytes_of(v), 5125, "SCALAR", v.size());
+    }
     json& doc() { return doc_; }
     // Raw bytes appended to the buffer as a view of their own (compressed data); its index.
     int view(const std::string& data) {

@@ -1,0 +1,261 @@
+// Pieces from glTF files made as other tools make them (support/cad_corpus.hpp): each class of
+// file that real CAD and web-viewer exports were refused for now loads, repaired where it can
+// be, with one warning line saying what was done; and what it makes is checked against what the
+// file was made from (the cut's corners and facets, the metal's triangles, the material's
+// numbers worked by hand).
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <map>
+#include <string>
+#include <vector>
+
+#include "../support/cad_corpus.hpp"
+#include "geometry/mesh_repair.hpp"
+#include "piece/gltf_piece.hpp"
+#include "piece/gltf_stone_evidence.hpp"
+
+namespace gem {
+namespace {
+
+namespace fs = std::filesystem;
+namespace cad = test_support::cad;
+
+struct Loaded {
+    Piece piece;
+    std::vector<std::string> log;
+};
+
+const std::map<std::string, Loaded>& corpus() {
+    static const std::map<std::string, Loaded> loaded = [] {
+        std::map<std::string, Loaded> out;
+        // A folder of the test's own: CTest runs each test as a process of its own, side by side.
+        const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "gltf-cad" /
+                             ::testing::UnitTest::GetInstance()->current_test_info()->name();
+        for (const cad::CorpusFile& f : cad::write_corpus(dir)) {
+            std::vector<std::string> log;
+            auto piece = load_gltf_piece(f.path, &log);
+            EXPECT_TRUE(piece) << f.name << ": " << (piece ? "" : piece.error());
+            if (piece) out[f.name] = {std::move(piece).value(), std::move(log)};
+        }
+        return out;
+    }();
+    return loaded;
+}
+
+const Loaded& file(const std::string& name) {
+    const auto it = corpus().find(name);
+    if (it == corpus().end()) throw std::runtime_error(name + " did not load");
+    return it->second;
+}
+
+// The warning lines holding `text`.
+std::vector<std::string> warnings_with(const Loaded& l, const std::string& text) {
+    std::vector<std::string> out;
+    for (const std::string& line : l.log) {
+        if (line.starts_with("warning: ") && line.find(text) != std::string::npos) {
+            out.push_back(line);
+        }
+    }
+    return out;
+}
+
+std::string all(const Loaded& l) {
+    std::string out;
+    for (const std::string& line : l.log) out += line + "\n";
+    return out;
+}
+
+// The farthest a placed stone's corner lies from the nearest of the cut's corners placed by
+// `to` (mm).
+double corner_error(const Piece& piece, std::size_t i, const Stone& cut,
+                    const std::function<glm::dvec3(glm::dvec3)>& to) {
+    double worst = 0.0;
+    const PieceStone& s = piece.stones[i];
+    for (const glm::dvec3& v : piece.kinds[s.kind].vertices) {
+        const glm::dvec3 p = s.placement.to_piece(v);
+        double best = HUGE_VAL;
+        for (const glm::dvec3& e : cut.vertices) best = std::min(best, glm::length(p - to(e)));
+        worst = std::max(worst, best);
+    }
+    return worst;
+}
+
+// Where the reader puts a centre stone that the file's origin lies outside of (the finger's
+// centre): its corners' centroid at the piece's origin.
+glm::dvec3 centroid(const Stone& s) {
+    glm::dvec3 c(0.0);
+    for (const glm::dvec3& v : s.vertices) c += v;
+    return c / static_cast<double>(s.vertices.size());
+}
+
+TEST(GltfCadCorpus, EveryFileLoads) {
+    const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "gltf-cad" / "listed";
+    for (const cad::CorpusFile& f : cad::write_corpus(dir)) {
+        ASSERT_TRUE(corpus().contains(f.name)) << f.name;
+        EXPECT_EQ(corpus().at(f.name).piece.stones.size(), static_cast<std::size_t>(f.stones))
+            << f.name << "\n" << all(corpus().at(f.name));
+    }
+}
+
+TEST(GltfCadCorpus, ALooseStoneIsAPieceWithAWarning) {
+    const Loaded& l = file("loose-stone.glb");
+    EXPECT_TRUE(l.piece.metal.positions.empty());
+    EXPECT_EQ(warnings_with(l, "floats off its seat").size(), 1u) << all(l);
+    const Stone cut = cad::round_brilliant(6.5);
+    EXPECT_EQ(l.piece.stone_of(0).facets.size(), cut.facets.size());
+    // Its origin lies inside the stone: kept, so every corner is where the file has it.
+    EXPECT_LT(corner_error(l.piece, 0, cut, [](glm::dvec3 p) { return p; }), 1e-5);
+}
+
+TEST(GltfCadCorpus, PrismsBeforeABackdropAreStonesAndTheBackdropMetal) {
+    const Loaded& l = file("prism-scene.glb");
+    ASSERT_EQ(l.piece.stones.size(), 25u);
+    for (const PieceStone& s : l.piece.stones) {
+        EXPECT_EQ(l.piece.kinds[s.kind].facets.size(), 5u);
+        EXPECT_TRUE(l.piece.kinds[s.kind].convex);
+    }
+    EXPECT_EQ(l.piece.metal.triangle_count(), 2u);  // the backdrop
+    // Prism 7: n_d 1.55, dispersion 0.5 → V_d 40, so n_F − n_C = 0.55 / 40 (worked by hand).
+    const auto seven = std::find_if(l.piece.stones.begin(), l.piece.stones.end(),
+                                    [](const PieceStone& s) { return s.role.find("'Prism.7'") != std::string::npos; });
+    ASSERT_NE(seven, l.piece.stones.end());
+    const Material& m = l.piece.kinds[seven->kind].material;
+    EXPECT_NEAR(m.index(587.6), 1.55, 1e-9);
+    EXPECT_NEAR(m.index(486.1) - m.index(656.3), 0.55 / 40.0, 1e-9);
+}
+
+TEST(GltfCadCorpus, AnUncutSeatIsAWarningWithItsDepth) {
+    const Loaded& l = file("uncut-seat.glb");
+    const auto lines = warnings_with(l, "the metal cuts");
+    ASSERT_EQ(lines.size(), 1u) << all(l);
+    const double depth = std::stod(lines[0].substr(lines[0].find("cuts ") + 5));
+    // The culet sinks 0.6 mm below the shank's top; the shank's polygon top sits at most its
+    // sagitta below the circle, so the depth seen is 0.6 mm less that, within 0.01 mm.
+    EXPECT_NEAR(depth, 0.6, 0.01);
+    EXPECT_NE(lines[0].find("uncut-seat.glb"), std::string::npos);
+}
+
+TEST(GltfCadCorpus, LinesAndPointsAreSkippedWithAWarningEach) {
+    const Loaded& l = file("curves-and-points.glb");
+    EXPECT_EQ(warnings_with(l, "lines (mode 3) skipped").size(), 1u) << all(l);
+    EXPECT_EQ(warnings_with(l, "points (mode 0) skipped").size(), 1u) << all(l);
+    EXPECT_EQ(l.piece.metal.triangle_count(), cad::shank().triangle_count());
+}
+
+TEST(GltfCadCorpus, TrianglesWithNoAreaAreDroppedAndTheStoneKeepsItsFacets) {
+    const Loaded& l = file("zero-area.glb");
+    const Stone cut = cad::round_brilliant(6.5);
+    const Stone& stone = l.piece.stone_of(0);
+    EXPECT_EQ(stone.facets.size(), cut.facets.size()) << all(l);
+    EXPECT_TRUE(stone.convex);
+    EXPECT_EQ(warnings_with(l, "1 triangle with no area dropped").size(), 1u) << all(l);
+    EXPECT_EQ(warnings_with(l, "2 metal triangle(s) with no area dropped").size(), 1u) << all(l);
+    EXPECT_EQ(l.piece.metal.triangle_count(), cad::shank().triangle_count());
+}
+
+TEST(GltfCadCorpus, AStoneMissingAWholeFacetIsClosedAsItWas) {
+    const Loaded& l = file("open-stone.glb");
+    const Stone cut = cad::round_brilliant(6.5);
+    const Stone& stone = l.piece.stone_of(0);
+    EXPECT_EQ(stone.facets.size(), cut.facets.size()) << all(l);
+    EXPECT_TRUE(stone.convex);
+    EXPECT_EQ(warnings_with(l, "1 hole filled").size(), 1u) << all(l);
+    const glm::dvec3 c = centroid(cut);
+    EXPECT_LT(corner_error(l.piece, 0, cut, [&](glm::dvec3 p) { return p - c; }), 1e-5);
+}
+
+TEST(GltfCadCorpus, AShankWithAnIndexAndAClearCoatIsMetal) {
+    const Loaded& l = file("ior-clearcoat-shank.glb");
+    ASSERT_EQ(l.piece.stones.size(), 1u);
+    EXPECT_EQ(l.piece.metal.triangle_count(), cad::shank(9.0, 1024, 64).triangle_count());
+    EXPECT_GT(l.piece.metal.triangle_count(), 100000u);
+    // Metallic 1: F0 is the base colour.
+    EXPECT_NEAR(l.piece.metal.f0.y, 0.766f, 1e-6f);
+    EXPECT_NEAR(l.piece.metal.roughness, 0.25f, 1e-6f);
+    EXPECT_EQ(warnings_with(l, "clear coat is left out").size(), 1u) << all(l);
+}
+
+TEST(GltfCadCorpus, AVendorDiamondMaterialOnMergedStones) {
+    const Loaded& l = file("webgi-merged-band.glb");
+    ASSERT_EQ(l.piece.stones.size(), 52u);
+    const Material& m = l.piece.stone_of(0).material;
+    // refractiveIndex 2.6; dispersion 0.012 → n_F − n_C = 0.024 (docs/gltf.md), checked at the
+    // F and C lines of the Cauchy form the reader builds.
+    EXPECT_NEAR(m.index(587.6), 2.6, 1e-9);
+    EXPECT_NEAR(m.index(486.1) - m.index(656.3), 0.024, 1e-9);
+    EXPECT_EQ(m.body_colour, glm::dvec3(1.0));
+    for (const PieceStone& s : l.piece.stones) {
+        EXPECT_EQ(l.piece.kinds[s.kind].facets.size(), cad::round_brilliant(1.1).facets.size());
+    }
+    const std::string text = all(l);
+    EXPECT_NE(text.find("carries WEBGI_materials_diamond (+3)"), std::string::npos) << text;
+}
+
+TEST(GltfCadCorpus, MillimetresAndZUpAreSeenAndTurned) {
+    const Loaded& l = file("millimetres-z-up.glb");
+    EXPECT_EQ(warnings_with(l, "read in millimetres").size(), 1u) << all(l);
+    EXPECT_EQ(warnings_with(l, "the centre stone's table faced +z").size(), 1u) << all(l);
+    // As the solitaire in metres and y up: the shank's outer radius 10 mm about x, the table up.
+    // The centre stone at the origin, its table up; the shank's top 10 mm above the finger's
+    // centre, which is the stone's lift below it.
+    const Stone cut = cad::round_brilliant(6.5);
+    const glm::dvec3 c = centroid(cut);
+    EXPECT_LT(corner_error(l.piece, 0, cut, [&](glm::dvec3 p) { return p - c; }), 1e-4);
+    const double lift = 10.0 + cad::pavilion_depth(cut);
+    float top = -1e9f;
+    for (const glm::vec3& p : l.piece.metal.positions) top = std::max(top, p.y);
+    EXPECT_NEAR(top, 10.0 - lift - c.y, 1e-3);
+}
+
+TEST(GltfStoneEvidence, SignsWeighAsDocumented) {
+    import::GltfPart part;
+    import::GltfMaterial m;
+    m.name = "Material.002";
+    m.extensions = {"KHR_materials_ior", "KHR_materials_clearcoat"};
+    EXPECT_EQ(stone_evidence(part, &m).score, 1);  // an index alone does not make a stone
+    part.node = "Diamond setting";                // both words: neither
+    EXPECT_EQ(stone_evidence(part, &m).score, 1);
+    part.node = "Prong_3";
+    EXPECT_EQ(stone_evidence(part, &m).score, -1);
+    part.node = "Diamond_1";
+    m.transmission = 1.0;
+    EXPECT_EQ(stone_evidence(part, &m).score, 6);
+}
+
+TEST(MeshRepair, ATJunctionSliverGoesAndTheMeshStaysClosed) {
+    // A tetrahedron whose edge 0–1 carries a corner 4 at its middle on one side only.
+    const std::vector<glm::dvec3> p = {{0, 0, 0}, {2, 0, 0}, {0, 2, 0}, {0, 0, 2}, {1, 0, 0}};
+    MeshTriangles t = {{0, 2, 1}, {0, 4, 3}, {4, 1, 3}, {0, 1, 4}, {1, 2, 3}, {0, 3, 2}};
+    // {0, 1, 4}: a sliver closing the T-junction against {0, 2, 1}, which runs 1 → 0.
+    EXPECT_EQ(drop_zero_area_triangles(p, t), 1u);
+    std::map<std::pair<std::uint32_t, std::uint32_t>, int> edges;
+    for (const auto& tri : t) {
+        for (int k = 0; k < 3; ++k) ++edges[{tri[k], tri[(k + 1) % 3]}];
+    }
+    for (const auto& [e, n] : edges) {
+        EXPECT_EQ(n, 1);
+        EXPECT_TRUE(edges.contains({e.second, e.first})) << e.first << "→" << e.second;
+    }
+}
+
+TEST(MeshRepair, FlippedTrianglesAreTurnedAndHolesFilled) {
+    const std::vector<glm::dvec3> p = {{0, 0, 0}, {1, 0, 0}, {0, 1, 0}, {0, 0, 1}};
+    MeshTriangles t = {{0, 2, 1}, {0, 3, 1}, {1, 2, 3}};  // the second flipped; 0-3-2 missing
+    auto turned = orient_consistently(t);
+    ASSERT_TRUE(turned);
+    EXPECT_EQ(turned.value(), 1u);
+    auto filled = fill_holes(p, t);
+    ASSERT_TRUE(filled) << filled.error();
+    EXPECT_EQ(filled.value(), 1u);
+    ASSERT_EQ(t.size(), 4u);
+    // Closed and wound outward: its signed volume is the tetrahedron's 1/6.
+    double volume6 = 0.0;
+    for (const auto& tri : t) volume6 += glm::dot(p[tri[0]], glm::cross(p[tri[1]], p[tri[2]]));
+    EXPECT_NEAR(std::abs(volume6), 1.0, 1e-12);
+}
+
+}  // namespace
+}  // namespace gem
