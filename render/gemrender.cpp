@@ -41,6 +41,7 @@ struct Options {
     bool spectral = false;
     std::string out;
     std::string linear;
+    std::string coverage;
     std::string method = "reference";
     std::string piece;
     std::string tone = "neutral";
@@ -157,6 +158,9 @@ int main(int argc, char** argv) {
     app.add_flag("--spectral", o.spectral, "trace wavelength samples (dispersion)");
     app.add_option("--out", o.out, "PNG to write (8-bit sRGB)");
     app.add_option("--linear", o.linear, "also write linear float colour as PFM (reference)");
+    app.add_option("--coverage", o.coverage,
+                   "also write where the stone or piece covers a pixel, as a white-on-black PNG "
+                   "(reference; what compare_pictures measures over)");
     app.add_option("--piece", o.piece,
                    "a piece description (config/pieces/README.md) instead of a stone")
         ->check(CLI::ExistingFile);
@@ -254,6 +258,13 @@ int main(int argc, char** argv) {
     }
     if (!o.linear.empty()) {
         if (auto written = gem::write_pfm(image.value(), o.linear); !written) {
+            return fail(written.error());
+        }
+    }
+    if (!o.coverage.empty()) {
+        gem::Image mask = image.value();
+        for (glm::vec4& p : mask.pixels) p = glm::vec4(glm::vec3(p.w > 0.5f ? 1.0f : 0.0f), 1.0f);
+        if (auto written = gem::write_png(mask, o.coverage); !written) {
             return fail(written.error());
         }
     }

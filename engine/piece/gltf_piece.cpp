@@ -16,6 +16,7 @@
 #include "import/import_text.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/gltf_stone_evidence.hpp"
+#include "piece/metal_simplify.hpp"
 #include "piece/piece_check.hpp"
 #include "render/camera.hpp"
 
@@ -606,6 +607,15 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
         }
         if (m != nullptr && m->clearcoat > 0.0) {
             warn("material " + metal_name + "'s clear coat is left out (the metal below shows)");
+        }
+        if (piece.metal.triangle_count() > kSimplifyMetalAbove) {
+            const std::size_t had = simplify_metal(piece.metal, kChordToleranceMm);
+            char text[200];
+            std::snprintf(text, sizeof text,
+                          "the metal's %zu triangles simplified to %zu, asking every surface to "
+                          "stay within %.4f mm of the file's (about a pixel at the closest view)",
+                          had, piece.metal.triangle_count(), kChordToleranceMm);
+            warn(text);
         }
         if (metal_parts.zero_area > 0) {
             warn(std::to_string(metal_parts.zero_area) +

@@ -344,4 +344,43 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
     return out;
 }
 
+// Two large files, for load times and frame times (bench_gltf_corpus): a solitaire whose shank
+// is a CAD mesh of 901,120 triangles, and a ring of 121 stones (a 6.5 mm centre, two rows of
+// 60 melee of 1 mm around the shank, each a node placing one shared mesh, as rendering tools
+// export them).
+inline std::vector<CorpusFile> write_large(const std::filesystem::path& dir) {
+    namespace fs = std::filesystem;
+    fs::create_directories(dir);
+    std::vector<CorpusFile> out;
+    {
+        Glb glb;
+        solitaire(glb, 0.0, 1000.0, {}, shank(9.0, 1024, 440));
+        glb.write(dir / "shank-900k.glb");
+        out.push_back({"shank-900k.glb", "a shank of 901,120 triangles", dir / "shank-900k.glb", 1});
+    }
+    {
+        Glb glb;
+        solitaire(glb, 0.0);
+        const Stone melee = round_brilliant(1.0);
+        const int m = transmissive(glb, "Diamond melee");
+        const int mesh = glb.mesh_of("Melee 1.0", json::array({primitive(glb, stone_soup(melee), m)}));
+        int placed = 0;
+        for (int row = 0; row < 2; ++row) {
+            for (int i = 0; i < 60; ++i) {
+                const double a = 2.0 * std::numbers::pi * (i + 0.5 * row) / 60.0;
+                const double r = 10.0 + pavilion_depth(melee) - 0.02;
+                glb.node({{"name", "Melee " + std::to_string(++placed)},
+                          {"mesh", mesh},
+                          {"translation", {(row ? 0.55 : -0.55) / 1000.0, r * std::cos(a) / 1000.0,
+                                           r * std::sin(a) / 1000.0}},
+                          {"rotation", {std::sin(a / 2.0), 0.0, 0.0, std::cos(a / 2.0)}}});
+            }
+        }
+        glb.write(dir / "ring-121-stones.glb");
+        out.push_back({"ring-121-stones.glb", "121 stones, a mesh placed by 120 nodes",
+                       dir / "ring-121-stones.glb", 121});
+    }
+    return out;
+}
+
 }  // namespace gem::test_support::cad

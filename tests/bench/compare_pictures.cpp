@@ -1,0 +1,68 @@
+// How far a picture is from its reference over the piece, as the pieces' and the glTF corpus'
+// figures are given (docs/gltf.md, docs/pieces.md): both averaged over blocks of N × N pixels
+// (linear colour; 4 by default, so that a facet edge a pixel apart is not counted as an error
+// twice), then compared as ΔE00 and PSNR (render/image_error.hpp) over the blocks where the
+// mask (gemrender --coverage) covers any pixel.
+//
+//   compare_pictures TEST.png REFERENCE.png MASK.png [--block N]
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "render/image.hpp"
+#include "render/image_error.hpp"
+
+int main(int argc, char** argv) {
+    if (argc != 4 && argc != 6) {
+        std::fprintf(stderr, "usage: compare_pictures TEST.png REFERENCE.png MASK.png [--block N]\n");
+        return 2;
+    }
+    const int block = argc == 6 ? std::atoi(argv[5]) : 4;
+    if (block < 1 || (argc == 6 && std::string(argv[4]) != "--block")) {
+        std::fprintf(stderr, "compare_pictures: --block takes a whole number of pixels\n");
+        return 2;
+    }
+    gem::Result<gem::Image> read[3] = {gem::read_png(argv[1]), gem::read_png(argv[2]),
+                                       gem::read_png(argv[3])};
+    for (const auto& r : read) {
+        if (!r) {
+            std::fprintf(stderr, "compare_pictures: %s\n", r.error().c_str());
+            return 1;
+        }
+    }
+    const gem::Image &test = read[0].value(), &reference = read[1].value(), &mask = read[2].value();
+    if (test.width != reference.width || test.height != reference.height ||
+        mask.width != reference.width || mask.height != reference.height) {
+        std::fprintf(stderr, "compare_pictures: the three pictures differ in size\n");
+        return 1;
+    }
+    const int w = reference.width / block, h = reference.height / block;
+    gem::Image a(w, h), b(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            glm::vec4 sa(0.0f), sb(0.0f);
+            bool covered = false;
+            for (int j = 0; j < block; ++j) {
+                for (int i = 0; i < block; ++i) {
+                    sa += test.at(x * block + i, y * block + j);
+                    sb += reference.at(x * block + i, y * block + j);
+                    covered = covered || mask.at(x * block + i, y * block + j).x > 0.5f;
+                }
+            }
+            const float n = static_cast<float>(block * block);
+            a.at(x, y) = glm::vec4(glm::vec3(sa) / n, covered ? 1.0f : 0.0f);
+            b.at(x, y) = glm::vec4(glm::vec3(sb) / n, covered ? 1.0f : 0.0f);
+        }
+    }
+    gem::ErrorOptions options;
+    options.only_stone = true;
+    auto error = gem::compare_images(a, b, options);
+    if (!error) {
+        std::fprintf(stderr, "compare_pictures: %s\n", error.error().c_str());
+        return 1;
+    }
+    const gem::ImageError& e = error.value();
+    std::printf("mean ΔE00 %.2f (p99 %.1f) and %.1f dB over %zu blocks of %d×%d pixels\n",
+                e.delta_e_mean, e.delta_e_p99, e.psnr_db, e.pixels, block, block);
+    return 0;
+}
