@@ -35,19 +35,21 @@ double extent(const std::vector<glm::dvec3>& positions, const MeshTriangles& tri
 std::size_t drop_zero_area_triangles(const std::vector<glm::dvec3>& positions,
                                      MeshTriangles& triangles, double relative) {
     const double least = relative * extent(positions, triangles);
-    std::size_t dropped = 0;
-    // Split triangles are appended and checked in turn: splitting a neighbour at a corner on
-    // its edge leaves two triangles that may themselves have no area.
-    for (std::size_t t = 0; t < triangles.size();) {
-        const auto tri = triangles[t];
+    const auto flat = [&](const std::array<std::uint32_t, 3>& tri) {
         const glm::dvec3 a = positions[tri[0]], b = positions[tri[1]], c = positions[tri[2]];
-        const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0];
         const double longest_edge =
             std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
-        if (!repeated && glm::length(glm::cross(b - a, c - a)) > least * longest_edge) {
+        return tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
+               !(glm::length(glm::cross(b - a, c - a)) > least * longest_edge);
+    };
+    std::size_t dropped = 0;
+    for (std::size_t t = 0; t < triangles.size();) {
+        const auto tri = triangles[t];
+        if (!flat(tri)) {
             ++t;
             continue;
         }
+        const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0];
         triangles[t] = triangles.back();
         triangles.pop_back();
         ++dropped;
@@ -69,8 +71,12 @@ std::size_t drop_zero_area_triangles(const std::vector<glm::dvec3>& positions,
             while (k < 3 && !(other[k] == q && other[(k + 1) % 3] == p)) ++k;
             if (k == 3) continue;
             const std::uint32_t x = other[(k + 2) % 3];
-            triangles[n] = {q, mid, x};
-            triangles.push_back({mid, p, x});
+            // Split only where both halves have area: a neighbour that is itself a sliver
+            // would be split back and forth (a fuzzed file did), and is dropped in its turn.
+            const std::array<std::uint32_t, 3> first{q, mid, x}, second{mid, p, x};
+            if (flat(first) || flat(second)) break;
+            triangles[n] = first;
+            triangles.push_back(second);
             break;
         }
     }

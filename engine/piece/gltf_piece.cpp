@@ -299,7 +299,7 @@ Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
         if (!filled) return Error{stone.error() + ", and " + filled.error()};
         drop_zero_area_triangles(corners, tris, tolerance);
         stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
-        if (!stone) return Error{"mesh is open (" + open + "), and filled it " + stone.error()};
+        if (!stone) return Error{"mesh is open (" + open + "), and once filled: " + stone.error()};
         said("open (" + open + "): " + std::to_string(filled.value()) + " hole" +
              (filled.value() == 1 ? "" : "s") + " filled");
     }

@@ -213,6 +213,16 @@ TEST(GltfCadCorpus, MillimetresAndZUpAreSeenAndTurned) {
     EXPECT_NEAR(top, 10.0 - lift - c.y, 1e-3);
 }
 
+// A file the fuzzer made (tests/fixtures/gltf/): a stone of slivers whose splitting at a
+// T-junction made slivers again, back and forth without end. It now reads in a moment, and is
+// refused in one line: what is left of the stone encloses no volume.
+TEST(GltfCadCorpus, SliversThatSplitIntoSliversEnd) {
+    auto read = load_gltf_piece(fs::path(GEM_FIXTURES_DIR) / "gltf" /
+                                "fuzz-slivers-split-back-and-forth.glb");
+    ASSERT_FALSE(read);
+    EXPECT_NE(read.error().find("encloses no volume"), std::string::npos) << read.error();
+}
+
 TEST(GltfStoneEvidence, SignsWeighAsDocumented) {
     import::GltfPart part;
     import::GltfMaterial m;
