@@ -22,6 +22,7 @@
 
 #include "import/gltf_compression.hpp"
 #include "import/import_text.hpp"
+#include "optics/colour.hpp"
 
 namespace gem::import {
 
@@ -201,19 +202,14 @@ Result<bool> decode_meshopt(tinygltf::Model& model) {
     return true;
 }
 
-// An sRGB colour component (0–1) made linear (IEC 61966-2-1).
-double srgb_to_linear(double c) {
-    return c <= 0.04045 ? c / 12.92 : std::pow((c + 0.055) / 1.055, 2.4);
-}
-
 // A colour as web viewers write one: a number 0xRRGGBB (three.js's Color.getHex()), a string
 // "#RRGGBB", or a list or an {r, g, b} object of 0–1 components; the first two are sRGB, the
 // last two linear, as three.js keeps them. Empty when it is none of these.
 std::optional<glm::dvec3> web_colour(const tinygltf::Value& v) {
     const auto from_hex = [](unsigned long rgb) {
-        return glm::dvec3(srgb_to_linear(double((rgb >> 16) & 0xFF) / 255.0),
-                          srgb_to_linear(double((rgb >> 8) & 0xFF) / 255.0),
-                          srgb_to_linear(double(rgb & 0xFF) / 255.0));
+        return glm::dvec3(srgb_decode(double((rgb >> 16) & 0xFF) / 255.0),
+                          srgb_decode(double((rgb >> 8) & 0xFF) / 255.0),
+                          srgb_decode(double(rgb & 0xFF) / 255.0));
     };
     if (v.IsNumber()) {
         const double x = v.GetNumberAsDouble();

@@ -186,12 +186,10 @@ double planar_tolerance(const std::vector<glm::dvec3>& stored, double step) {
         {kPlanarRelative, 4.0 * kFloatRounding * far / size, kQuantisedSteps * step / size});
 }
 
-
 // The piece's metal as the parts give it: every metal triangle placed in millimetres, and the
 // area each material covers, so that the piece's one metal is the one most of it is made of.
 struct MetalParts {
     std::map<int, double> area_by_material;  // material index (-1: the default) → mm²
-    std::map<int, std::string> first_node;   // for the log line
     std::size_t triangles = 0;
     std::size_t zero_area = 0;
 };
@@ -213,9 +211,9 @@ void add_metal(const import::GltfPart& part, const std::vector<std::array<std::u
         const glm::dmat3 to_normal = glm::transpose(glm::inverse(glm::dmat3(to)));
         for (std::size_t i = 0; i < placed.size(); ++i) normal[i] = to_normal * part.normals[i];
     }
-    // Only the corners the triangles use are kept: a part split into stones and metal, or a
-    // mesh whose unused vertices fill a large buffer, adds no more than it draws.
-    // Used corners keep the file's order (what this project writes reads back as it was).
+    // Only the corners the triangles use are kept (a part split into stones and metal, or a
+    // mesh whose unused vertices fill a large buffer, adds no more than it draws), in the
+    // file's order (what this project writes reads back as it was).
     constexpr std::uint32_t kUnused = ~0u;
     std::vector<std::uint32_t> index(placed.size(), kUnused);
     std::vector<std::array<std::uint32_t, 3>> kept;
@@ -249,7 +247,6 @@ void add_metal(const import::GltfPart& part, const std::vector<std::array<std::u
     }
     parts.triangles += kept.size();
     parts.area_by_material[part.material] += area;
-    parts.first_node.try_emplace(part.material, part.node);
 }
 
 // The metal's F0 and roughness from a glTF material: F0 mixed from the dielectric's to the base

@@ -25,6 +25,7 @@ namespace {
 
 namespace fs = std::filesystem;
 namespace cad = test_support::cad;
+using nlohmann::json;
 
 struct Loaded {
     Piece piece;
@@ -221,6 +222,35 @@ TEST(GltfCadCorpus, SliversThatSplitIntoSliversEnd) {
                                 "fuzz-slivers-split-back-and-forth.glb");
     ASSERT_FALSE(read);
     EXPECT_NE(read.error().find("encloses no volume"), std::string::npos) << read.error();
+}
+
+// WEBGI_materials_diamond's colour as its exporters write it: a number 0xRRGGBB or a string
+// "#RRGGBB", sRGB; and isDiamond false says the material is not a gem.
+TEST(GltfCadCorpus, AVendorDiamondsColourAndItsNo) {
+    const Stone cut = cad::round_brilliant(2.0);
+    const auto loose = [&](json webgi) {
+        test_support::Glb glb;
+        const int m = glb.material({{"name", "Material_1"},
+                                    {"extensions", {{"WEBGI_materials_diamond", webgi}}}});
+        const int mesh =
+            glb.mesh_of("Object_1", json::array({cad::primitive(glb, cad::stone_soup(cut), m)}));
+        glb.node({{"name", "Object_1"}, {"mesh", mesh}});
+        const fs::path file = fs::path(GEM_ARTIFACT_DIR) / "gltf-cad" / "webgi-colour.glb";
+        glb.write(file);
+        return load_gltf_piece(file);
+    };
+    // 0x80 is 128: sRGB 0.50196 decodes to 0.21586 (IEC 61966-2-1, worked by hand).
+    for (const json& colour : {json("#FF8000"), json(0xFF8000)}) {
+        auto read = loose({{"color", colour}});
+        ASSERT_TRUE(read) << read.error();
+        const glm::dvec3 c = read.value().stone_of(0).material.body_colour;
+        EXPECT_NEAR(c.x, 1.0, 1e-9) << colour;
+        EXPECT_NEAR(c.y, 0.21586, 1e-5) << colour;
+        EXPECT_NEAR(c.z, 0.0, 1e-9) << colour;
+    }
+    auto no = loose({{"isDiamond", false}, {"refractiveIndex", 2.4}});
+    ASSERT_FALSE(no);
+    EXPECT_NE(no.error().find("no stone found"), std::string::npos) << no.error();
 }
 
 TEST(GltfStoneEvidence, SignsWeighAsDocumented) {
