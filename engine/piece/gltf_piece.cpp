@@ -271,11 +271,14 @@ void set_metal_material(const import::GltfMaterial* m, MetalMesh& metal) {
 // neighbours turned, and an open stone closed: by the planes of the facets it kept where they
 // close it as it was (a convex stone that lost a few triangles), else by filling its holes (a
 // whole facet lost, or a stone that is not convex). `repairs` says what was done.
+// `tolerance` is the facets' (planar_tolerance); `sliver`, the height below which a triangle
+// has no area: the float rounding alone, since a quantised melee's girdle triangles are
+// thinner than its grid's facet tolerance and are real.
 Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
                              std::vector<std::array<std::uint32_t, 3>> tris, const std::string& name,
-                             double tolerance, std::string& repairs) {
+                             double tolerance, double sliver, std::string& repairs) {
     const auto said = [&](const std::string& what) { repairs += "; " + what; };
-    if (const std::size_t n = drop_zero_area_triangles(corners, tris, tolerance); n > 0) {
+    if (const std::size_t n = drop_zero_area_triangles(corners, tris, sliver); n > 0) {
         said(std::to_string(n) + " triangle" + (n == 1 ? "" : "s") + " with no area dropped");
     }
     auto stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
@@ -294,7 +297,7 @@ Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
         }
         auto filled = fill_holes(corners, tris);
         if (!filled) return Error{stone.error() + ", and " + filled.error()};
-        drop_zero_area_triangles(corners, tris, tolerance);
+        drop_zero_area_triangles(corners, tris, sliver);
         stone = stone_from_triangles(corners, tris, name, 1e-6, tolerance);
         if (!stone) return Error{"mesh is open (" + open + "), and once filled: " + stone.error()};
         said("open (" + open + "): " + std::to_string(filled.value()) + " hole" +
@@ -516,7 +519,8 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                 std::string stone_name = part.mesh.empty() ? part.node : part.mesh;
                 const double tolerance = planar_tolerance(stored, part.position_step);
                 std::string repairs;
-                auto stone = repaired_stone(corners, local, stone_name, tolerance, repairs);
+                auto stone = repaired_stone(corners, local, stone_name, tolerance,
+                                            planar_tolerance(stored, 0.0), repairs);
                 // A part with signs both ways is a stone when it is shaped as one: closed, and
                 // convex or of few facets (a cut has tens; a cast setting thousands).
                 const bool shaped =
