@@ -92,8 +92,9 @@ int main(int argc, char** argv) {
     std::string piece_in, piece_out;
     bool piece_check = false;
     CLI::App* p = app.add_subcommand(
-        "piece", "a piece (.toml, .glb, .gltf) written as glTF 2.0 (.glb) for a web catalogue, "
-                 "or checked (--check)");
+        "piece",
+        "a piece (.toml, .glb, .gltf) written as glTF 2.0 (.glb) for a web catalogue, "
+        "or checked (--check)");
     p->add_option("piece", piece_in, "piece description (.toml) or glTF file")->required();
     CLI::Option* piece_out_option = p->add_option("-o,--out", piece_out, "the .glb to write");
     p->add_flag("--check", piece_check,

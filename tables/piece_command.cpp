@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
 
@@ -36,7 +37,7 @@ int run_piece_check(const std::string& piece_file) {
     std::size_t warnings = 0;
     for (const std::string& line : log) {
         std::printf("%s\n", line.c_str());
-        if (line.starts_with("warning: ")) ++warnings;
+        if (line.starts_with(kWarningLine)) ++warnings;
     }
     if (!piece) {
         std::printf("refused after %.1f ms: %s\n", ms, piece.error().c_str());

@@ -137,8 +137,7 @@ Result<std::size_t> orient_consistently(MeshTriangles& triangles) {
     return turned;
 }
 
-Result<std::size_t> fill_holes(const std::vector<glm::dvec3>& positions,
-                               MeshTriangles& triangles) {
+Result<std::size_t> fill_holes(const std::vector<glm::dvec3>& positions, MeshTriangles& triangles) {
     std::unordered_map<std::uint64_t, int> count;
     for (const auto& t : triangles) {
         for (int k = 0; k < 3; ++k) ++count[directed(t[k], t[(k + 1) % 3])];
@@ -167,13 +166,9 @@ Result<std::size_t> fill_holes(const std::vector<glm::dvec3>& positions,
         if (loop.size() < 3 || v != loop.front()) {
             return Error{"its open edges do not close into loops"};
         }
-        // The loop's Newell normal: the side from which it winds counter-clockwise, the
-        // outward side of the triangles that fill it.
-        glm::dvec3 normal(0.0);
-        for (std::size_t i = 0; i < loop.size(); ++i) {
-            const glm::dvec3 p = positions[loop[i]], q = positions[loop[(i + 1) % loop.size()]];
-            normal += glm::cross(p, q);
-        }
+        // The side from which the loop winds counter-clockwise is the outward side of the
+        // triangles that fill it.
+        const glm::dvec3 normal = newell_normal(positions, loop);
         if (!(glm::length(normal) > 0.0)) return Error{"a hole with no area"};
         // A loop that is not simple in its plane gives triangles that overlap: the stone
         // built from them then fails its own checks, naming what is wrong.

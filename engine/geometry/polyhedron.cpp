@@ -157,15 +157,6 @@ Result<ClipSolid> clip_all(const std::vector<FacetPlane>& planes, const glm::dve
     return solid;
 }
 
-glm::dvec3 newell_normal(const std::vector<glm::dvec3>& vertices,
-                         const std::vector<std::uint32_t>& loop) {
-    glm::dvec3 n(0.0);
-    for (std::size_t i = 0; i < loop.size(); ++i) {
-        n += glm::cross(vertices[loop[i]], vertices[loop[(i + 1) % loop.size()]]);
-    }
-    return n;  // twice the vector area
-}
-
 // Merges vertices closer than `tolerance` and renumbers the loops; drops unused vertices.
 void weld(Stone& stone, double tolerance) {
     std::vector<std::uint32_t> remap(stone.vertices.size(), UINT32_MAX);

@@ -30,6 +30,15 @@ bool inside_triangle(const glm::dvec2& p, const glm::dvec2& a, const glm::dvec2&
 
 }  // namespace
 
+glm::dvec3 newell_normal(const std::vector<glm::dvec3>& vertices,
+                         const std::vector<std::uint32_t>& loop) {
+    glm::dvec3 n(0.0);
+    for (std::size_t i = 0; i < loop.size(); ++i) {
+        n += glm::cross(vertices[loop[i]], vertices[loop[(i + 1) % loop.size()]]);
+    }
+    return n;
+}
+
 void triangulate_polygon(const std::vector<glm::dvec3>& vertices,
                          const std::vector<std::uint32_t>& loop, const glm::dvec3& normal,
                          std::vector<std::array<std::uint32_t, 3>>& out) {

@@ -1,6 +1,7 @@
 #pragma once
-// Triangulation of one planar polygon by ear clipping, shared by the facet builders and the
-// mesh importers (a polygon face of an OBJ file need not be convex).
+// Planar polygons given as loops of corner indices: their area vector, and their triangulation
+// by ear clipping, shared by the facet builders, the mesh importers (a polygon face of an OBJ
+// file need not be convex) and the mesh repairs.
 
 #include <array>
 #include <cstdint>
@@ -9,6 +10,11 @@
 #include <glm/glm.hpp>
 
 namespace gem {
+
+// Newell's sum over the loop: twice its vector area, along the side from which it winds
+// counter-clockwise.
+glm::dvec3 newell_normal(const std::vector<glm::dvec3>& vertices,
+                         const std::vector<std::uint32_t>& loop);
 
 // Appends the triangles of the simple polygon `loop` (indices into `vertices`), which winds
 // counter-clockwise seen from the side `normal` points to. The triangles keep that winding.

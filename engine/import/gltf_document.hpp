@@ -2,11 +2,12 @@
 // A glTF 2.0 file (.glb, or .gltf with its buffers) read into plain parts: every mesh primitive
 // placed in the scene (its triangles in the mesh's own frame and the node's transform to the
 // scene, glTF's metres, +y up) and the materials it names, with the Khronos gem extensions
-// (KHR_materials_ior, _transmission, _volume, _dispersion) read. This header is the whole of
-// the glTF library (Debian's tinygltf 2.7, compiled in: gltf_document.cpp says why) that the
-// rest of the project sees: gltf_document.cpp reads, gltf_write.cpp writes, and
-// gltf_compression.cpp decodes Draco and meshopt meshes. What a piece makes of the parts is
-// piece/gltf_piece.hpp.
+// (KHR_materials_ior, _transmission, _volume, _dispersion), the surface ones (_specular,
+// _clearcoat) and a vendor's gem material read. This header is the whole of the glTF library
+// (Debian's tinygltf 2.7, compiled in: gltf_document.cpp says why) that the rest of the
+// project sees: gltf_document.cpp reads, gltf_material.cpp reads the materials, gltf_write.cpp
+// writes, and gltf_compression.cpp decodes Draco and meshopt meshes. What a piece makes of the
+// parts is piece/gltf_piece.hpp.
 //
 // Refused with one message naming the file and the fault: a file that is not glTF, a truncated
 // .glb, an accessor or compressed data reaching outside its buffer or not decoding, a node tree
@@ -42,9 +43,8 @@ struct GltfMaterial {
     glm::dvec3 attenuation_colour{1.0};  // KHR_materials_volume
     double attenuation_distance_m = std::numeric_limits<double>::infinity();
     double thickness_m = 0.0;  // KHR_materials_volume's thicknessFactor: 0 is thin-walled
-    double clearcoat = 0.0;    // KHR_materials_clearcoat: the coat's share and its roughness
-    double clearcoat_roughness = 0.0;
-    double specular = 1.0;  // KHR_materials_specular: scales a dielectric's F0, tinted by colour
+    double clearcoat = 0.0;    // KHR_materials_clearcoat: the coat's share (said, not drawn)
+    double specular = 1.0;     // KHR_materials_specular: scales a dielectric's F0, tinted by colour
     glm::dvec3 specular_colour{1.0};
     // A vendor's gem material (WEBGI_materials_diamond, written by web jewellery viewers and
     // their CAD plug-ins): the extension's name and what it says of the stone. Its fields are

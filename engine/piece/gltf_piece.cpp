@@ -12,6 +12,7 @@
 
 #include "geometry/mesh_repair.hpp"
 #include "geometry/polyhedron.hpp"
+#include "geometry/triangulate.hpp"
 #include "import/gltf_document.hpp"
 #include "import/import_text.hpp"
 #include "piece/gltf_piece_writer.hpp"
@@ -71,10 +72,11 @@ Material stone_material(const import::GltfPart& part, const import::GltfMaterial
     // "Diamond" of 2.42 or 2.4), keeps its own dispersion curve and colour. Gems a name tells
     // apart differ by more: diamond 2.417, moissanite 2.65, cubic zirconia 2.15.
     constexpr double kTypedIndex = 0.02;
-    const bool ior_agrees = !ior || std::abs(*ior - material.index(587.6)) < (named ? kTypedIndex : 1e-3);
+    const bool ior_agrees =
+        !ior || std::abs(*ior - material.index(587.6)) < (named ? kTypedIndex : 1e-3);
     const double built_in_vd = abbe_number(material);
-    const bool fire_agrees = !abbe || (std::isfinite(built_in_vd) &&
-                                       std::abs(*abbe / built_in_vd - 1.0) < 0.01);
+    const bool fire_agrees =
+        !abbe || (std::isfinite(built_in_vd) && std::abs(*abbe / built_in_vd - 1.0) < 0.01);
     const bool as_built_in = named && ior_agrees && fire_agrees;
     if (as_built_in && (ior || abbe)) {
         described += ", its index and fire as the file gives them";
@@ -221,8 +223,7 @@ void add_metal(const import::GltfPart& part, const std::vector<std::array<std::u
     double area = 0.0;
     for (auto t : tris) {
         if (mirrored) std::swap(t[1], t[2]);
-        const glm::dvec3 g =
-            glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
+        const glm::dvec3 g = glm::cross(placed[t[1]] - placed[t[0]], placed[t[2]] - placed[t[0]]);
         // A triangle with no area draws nothing and has no normal to give its corners.
         if (!(glm::length(g) > 1e-12)) {
             ++parts.zero_area;
@@ -260,7 +261,8 @@ void set_metal_material(const import::GltfMaterial* m, MetalMesh& metal) {
     if (m != nullptr) {
         const double n = m->ior.value_or(1.5);
         const double f = (n - 1.0) / (n + 1.0);
-        dielectric = glm::min(glm::dvec3(f * f) * m->specular_colour, glm::dvec3(1.0)) * m->specular;
+        dielectric =
+            glm::min(glm::dvec3(f * f) * m->specular_colour, glm::dvec3(1.0)) * m->specular;
     }
     metal.f0 = glm::vec3(glm::mix(dielectric, glm::clamp(base_colour, 0.0, 1.0), metallic));
     metal.roughness = static_cast<float>(std::clamp(m ? m->roughness : 1.0, 0.0, 1.0));
@@ -275,8 +277,9 @@ void set_metal_material(const import::GltfMaterial* m, MetalMesh& metal) {
 // has no area: the float rounding alone, since a quantised melee's girdle triangles are
 // thinner than its grid's facet tolerance and are real.
 Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
-                             std::vector<std::array<std::uint32_t, 3>> tris, const std::string& name,
-                             double tolerance, double sliver, std::string& repairs) {
+                             std::vector<std::array<std::uint32_t, 3>> tris,
+                             const std::string& name, double tolerance, double sliver,
+                             std::string& repairs) {
     const auto said = [&](const std::string& what) { repairs += "; " + what; };
     if (const std::size_t n = drop_zero_area_triangles(corners, tris, sliver); n > 0) {
         said(std::to_string(n) + " triangle" + (n == 1 ? "" : "s") + " with no area dropped");
@@ -341,12 +344,7 @@ std::string turn_table_up(Piece& piece) {
     double largest = 0.0, second = 0.0;
     glm::dvec3 table(0.0);
     for (const Facet& f : hero.facets) {
-        glm::dvec3 area(0.0);
-        for (std::size_t i = 0; i < f.loop.size(); ++i) {
-            area += glm::cross(hero.vertices[f.loop[i]],
-                               hero.vertices[f.loop[(i + 1) % f.loop.size()]]);
-        }
-        const double a = 0.5 * glm::length(area);
+        const double a = 0.5 * glm::length(newell_normal(hero.vertices, f.loop));
         if (a > largest) {
             second = largest;
             largest = a;
@@ -410,7 +408,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     const import::GltfDocument& doc = read.value();
     const std::string file = std::filesystem::path(name).filename().string();
     const auto warn = [&](const std::string& what) {
-        if (log != nullptr) log->push_back("warning: " + file + ": " + what);
+        if (log != nullptr) log->push_back(std::string(kWarningLine) + file + ": " + what);
     };
     for (const std::string& w : doc.warnings) warn(w);
     Piece piece;
@@ -425,6 +423,10 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     // instance of the same mesh is not tried again.
     std::set<std::tuple<int, int, std::size_t>> not_stones;
     std::string demoted;  // the first stone drawn as metal, and why: said if no stone is left
+    struct {
+        std::string line;
+        std::size_t at = 0, alike = 0;  // where in the log, and how many stones it stands for
+    } last_stone;
     // How far quantised positions may stand from where the piece had them: half a step along
     // each axis, for the stone and for the metal against it.
     double rounding_mm = 0.0;
@@ -536,8 +538,9 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                     add_metal(part, tris, mm_per_unit, piece.metal, metal_parts);
                     continue;
                 }
-                if (by_shape) reason += "; its shape, closed and " +
-                                        std::string(stone.value().convex ? "convex" : "of few facets");
+                if (by_shape)
+                    reason += "; its shape, closed and " +
+                              std::string(stone.value().convex ? "convex" : "of few facets");
                 if (!repairs.empty()) warn(who + ": repaired" + repairs);
                 std::string described;
                 if (listed != nullptr && listed->material) {
@@ -565,8 +568,16 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                     char facets[64];
                     std::snprintf(facets, sizeof facets, "; %zu facets",
                                   piece.kinds.back().facets.size());
-                    log->push_back("stone " + who + ": recognised as a stone by " + reason + "; " +
-                                   described + facets + shape);
+                    const std::string line = "stone " + who + ": recognised as a stone by " +
+                                             reason + "; " + described + facets + shape;
+                    // Stones merged into one mesh say the same line each: said once, counted.
+                    if (line == last_stone.line && last_stone.at < log->size()) {
+                        (*log)[last_stone.at] =
+                            line + " (" + std::to_string(++last_stone.alike) + " stones alike)";
+                    } else {
+                        last_stone = {line, log->size(), 1};
+                        log->push_back(line);
+                    }
                 }
             }
             piece.stones.push_back(
@@ -576,10 +587,12 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     if (log != nullptr && metal_parts.area_by_material.empty()) {
         log->push_back("metal: none (loose stones)");
     }
-    if (piece.stones.empty() && !demoted.empty()) return Error{name + ": no stone left: " + demoted};
+    if (piece.stones.empty() && !demoted.empty())
+        return Error{name + ": no stone left: " + demoted};
     if (piece.stones.empty()) {
-        return Error{name + ": no stone found (see config/pieces/README.md: how a stone is "
-                            "recognised; a manifest beside the file can name them)"};
+        return Error{name +
+                     ": no stone found (see config/pieces/README.md: how a stone is "
+                     "recognised; a manifest beside the file can name them)"};
     }
     // The piece's one metal is the material that covers the most of it.
     if (!metal_parts.area_by_material.empty()) {
@@ -619,8 +632,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
             warn(text);
         }
         if (metal_parts.zero_area > 0) {
-            warn(std::to_string(metal_parts.zero_area) +
-                 " metal triangle(s) with no area dropped");
+            warn(std::to_string(metal_parts.zero_area) + " metal triangle(s) with no area dropped");
         }
     }
     // The largest stone is the centre, the picture's hero; among stones of one size (within
@@ -646,22 +658,6 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
         for (glm::vec3& p : piece.metal.positions) p -= glm::vec3(centre);
         piece.file_origin_mm = centre;
     }
-    if (log != nullptr) {
-        // Stones merged into one mesh say the same line each: said once, with their number.
-        std::vector<std::string> said;
-        std::size_t repeats = 0;
-        for (std::string& line : *log) {
-            if (!said.empty() && line == said.back()) {
-                ++repeats;
-                continue;
-            }
-            if (repeats > 0) said.back() += " (" + std::to_string(repeats + 1) + " stones alike)";
-            repeats = 0;
-            said.push_back(std::move(line));
-        }
-        if (repeats > 0) said.back() += " (" + std::to_string(repeats + 1) + " stones alike)";
-        *log = std::move(said);
-    }
     if (log != nullptr && doc.images_ignored > 0) {
         log->push_back(std::to_string(doc.images_ignored) +
                        " texture image(s) ignored: a piece is shaded by its materials' factors");
@@ -669,20 +665,15 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     // What a jeweller's check finds is said, not refused: CAD seats are often not cut, and a
     // loose stone has no metal.
     // A band of 52 stones whose seats are all uncut says so once, with a count.
-    std::map<std::string, std::vector<std::string>> alike;
-    for (const std::string& problem : piece_problems(piece, rounding_mm)) {
-        const char* kinds[] = {"floats off its seat", "the metal cuts", "intersects"};
-        std::string kind = problem;
-        for (const char* k : kinds) {
-            if (problem.find(k) != std::string::npos) kind = k;
-        }
-        alike[kind].push_back(problem);
+    std::map<PieceProblem::Kind, std::vector<std::string>> alike;
+    for (PieceProblem& problem : piece_problems(piece, rounding_mm)) {
+        alike[problem.kind].push_back(std::move(problem.message));
     }
-    for (const auto& [kind, problems] : alike) {
-        warn(problems.front() + (problems.size() > 1
-                                     ? " (and " + std::to_string(problems.size() - 1) +
-                                           " more stones alike)"
-                                     : std::string()));
+    for (const auto& [kind, messages] : alike) {
+        warn(messages.front() +
+             (messages.size() > 1
+                  ? " (and " + std::to_string(messages.size() - 1) + " more stones alike)"
+                  : std::string()));
     }
     return piece;
 }

@@ -42,9 +42,12 @@
 
 namespace gem {
 
+// What begins each line of `log` that says what was repaired or read past.
+inline constexpr std::string_view kWarningLine = "warning: ";
+
 // `log`, if given, receives one line per stone kind (how it was recognised and its material),
-// one "warning: ..." line per repair or problem, and one for ignored textures. A manifest beside the file (gltf_manifest.hpp) is read and
-// wins over the file's materials and names.
+// one kWarningLine line per repair or problem, and one for ignored textures. A manifest beside the
+// file (gltf_manifest.hpp) is read and wins over the file's materials and names.
 Result<Piece> load_gltf_piece(const std::filesystem::path& path,
                               std::vector<std::string>* log = nullptr);
 // The same from the file's bytes; `name` stands for the file in messages (and names the

@@ -19,8 +19,8 @@ const std::vector<std::string> kMetalWords = {
     "gold", "platinum", "silver", "metal", "rhodium", "palladium", "titanium", "shank", "prong",
     "prongs", "claw", "claws", "bezel", "setting", "gallery", "basket", "mount", "mounting",
     // German, French, Italian, Spanish
-    "weissgold", "gelbgold", "rotgold", "platin", "silber", "fassung", "krappe", "argent", "platine", "griffe", "sertissure", "oro", "argento", "platino", "plata", "griffa",
-    "garra"};
+    "weissgold", "gelbgold", "rotgold", "platin", "silber", "fassung", "krappe", "argent",
+    "platine", "griffe", "sertissure", "oro", "argento", "platino", "plata", "griffa", "garra"};
 
 std::vector<std::string> words_of(const std::string& name) {
     std::vector<std::string> out;

@@ -20,8 +20,8 @@ std::size_t simplify_metal(MetalMesh& metal, double tolerance_mm) {
     // meshoptimizer's error is relative to the mesh's extent, and a quadric's estimate of the
     // distance, not a bound: on a torus of 225,280 triangles the surfaces strayed 3.7 times as
     // far as asked (MetalSimplify.ACadShank...), and on one of 901,120 asking a quarter of it
-    // still strayed 2.2 times as far, with twice the triangles. So the tolerance is asked for as it is, and what
-    // it gives is measured. No triangle count is aimed at: the error alone stops it.
+    // still strayed 2.2 times as far, with twice the triangles. So the tolerance is asked for as it
+    // is, and what it gives is measured. No triangle count is aimed at: the error alone stops it.
     std::vector<unsigned int> kept(metal.indices.size());
     float reached = 0.0f;
     kept.resize(meshopt_simplify(kept.data(), metal.indices.data(), metal.indices.size(),
@@ -29,8 +29,8 @@ std::size_t simplify_metal(MetalMesh& metal, double tolerance_mm) {
                                  0, static_cast<float>(tolerance_mm) / extent, 0, &reached));
     // Only the corners still used, in their order.
     std::vector<unsigned int> remap(metal.positions.size());
-    const std::size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), kept.data(), kept.size(),
-                                                              metal.positions.size());
+    const std::size_t used = meshopt_optimizeVertexFetchRemap(remap.data(), kept.data(),
+                                                              kept.size(), metal.positions.size());
     std::vector<glm::vec3> positions(used), normals(used);
     meshopt_remapVertexBuffer(positions.data(), metal.positions.data(), metal.positions.size(),
                               sizeof(glm::vec3), remap.data());

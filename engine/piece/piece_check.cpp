@@ -56,13 +56,14 @@ bool stones_intersect(const Stone& a, const Placement& pa, const Stone& b, const
 }
 
 Result<bool> check_piece(const Piece& piece, double rounding_mm) {
-    const std::vector<std::string> problems = piece_problems(piece, rounding_mm);
-    if (!problems.empty()) return Error{problems.front()};
+    const std::vector<PieceProblem> problems = piece_problems(piece, rounding_mm);
+    if (!problems.empty()) return Error{problems.front().message};
     return true;
 }
 
-std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm) {
-    std::vector<std::string> problems;
+std::vector<PieceProblem> piece_problems(const Piece& piece, double rounding_mm) {
+    using Kind = PieceProblem::Kind;
+    std::vector<PieceProblem> problems;
     const double seat = kSeatMm + rounding_mm, held = kHeldMm + rounding_mm;
     auto name = [&](std::size_t i) {
         return "stone " + std::to_string(i + 1) + " ('" + piece.stones[i].role + "')";
@@ -71,7 +72,7 @@ std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm) 
         for (std::size_t j = i + 1; j < piece.stones.size(); ++j) {
             if (stones_intersect(piece.stone_of(i), piece.stones[i].placement, piece.stone_of(j),
                                  piece.stones[j].placement)) {
-                problems.push_back(name(j) + " intersects " + name(i));
+                problems.push_back({Kind::stones_intersect, name(j) + " intersects " + name(i)});
             }
         }
     }
@@ -144,13 +145,16 @@ std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm) 
             if (corner_inside[k]) deepest = std::max(deepest, corner_distance[k]);
         }
         if (deepest > seat + 1e-6) {
-            problems.push_back("the metal cuts " + std::to_string(deepest) + " mm into " +
-                               name(i) + " (a seat is at most " + std::to_string(seat) + " mm)");
+            problems.push_back({Kind::metal_cuts_in, "the metal cuts " + std::to_string(deepest) +
+                                                         " mm into " + name(i) +
+                                                         " (a seat is at most " +
+                                                         std::to_string(seat) + " mm)"});
         } else if (!(nearest <= held)) {
-            problems.push_back(name(i) + " floats off its seat: the nearest metal is " +
-                               (std::isfinite(nearest) ? std::to_string(nearest) + " mm away"
-                                                       : std::string("beyond the stone")) +
-                               " (at most " + std::to_string(held) + " mm)");
+            problems.push_back({Kind::stone_floats,
+                                name(i) + " floats off its seat: the nearest metal is " +
+                                    (std::isfinite(nearest) ? std::to_string(nearest) + " mm away"
+                                                            : std::string("beyond the stone")) +
+                                    " (at most " + std::to_string(held) + " mm)"});
         }
     }
     return problems;

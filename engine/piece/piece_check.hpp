@@ -21,9 +21,16 @@ inline constexpr double kHeldMm = 0.1;
 // quantised glTF's step), allowed on top of the seat and the hold. The first problem found.
 Result<bool> check_piece(const Piece& piece, double rounding_mm = 0.0);
 
-// Every problem, one line each: what a piece from CAD is shown with, as warnings (an uncut
-// seat, a loose stone with no metal), where a piece description is refused.
-std::vector<std::string> piece_problems(const Piece& piece, double rounding_mm = 0.0);
+// One problem, and which of the checks found it.
+struct PieceProblem {
+    enum class Kind { stones_intersect, metal_cuts_in, stone_floats };
+    Kind kind;
+    std::string message;  // names the stones by their roles
+};
+
+// Every problem: what a piece from CAD is shown with, as warnings (an uncut seat, a loose stone
+// with no metal), where a piece description is refused.
+std::vector<PieceProblem> piece_problems(const Piece& piece, double rounding_mm = 0.0);
 
 // Whether the two placed stones share any volume (their surfaces cross, or one holds the
 // other); stones that only touch do not.

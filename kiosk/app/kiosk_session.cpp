@@ -25,16 +25,6 @@ namespace gem::kiosk {
 
 namespace {
 
-// A catalogue's notes: how a glTF piece's stones were found (information), and what its reader
-// repaired or read past ("piece 'X': warning: ...": a warning, for staff to look at).
-void log_catalogue_note(const std::string& note) {
-    if (note.find("': warning: ") != std::string::npos) {
-        log_warning(note);
-    } else {
-        log_info(note);
-    }
-}
-
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
 
@@ -115,7 +105,8 @@ Result<bool> KioskSession::configure() {
                  std::to_string(startup.value().stones.size()) + " stones from " +
                  startup.value().directory.string());
         for (const std::string& why : startup.value().left_out) log_error(why);
-        for (const std::string& note : startup.value().notes) log_catalogue_note(note);
+        for (const std::string& note : startup.value().notes) log_info(note);
+        for (const std::string& warning : startup.value().warnings) log_warning(warning);
         selection_->set_catalogue(startup.value());
         catalogue_ = std::move(startup).value();
     } else {
@@ -284,7 +275,8 @@ void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
                (catalogue.signed_by.empty() ? "" : ", signed by key " + catalogue.signed_by) +
                ") from " + catalogue.directory.string());
     for (const std::string& why : catalogue.left_out) log_error(why);
-    for (const std::string& note : catalogue.notes) log_catalogue_note(note);
+    for (const std::string& note : catalogue.notes) log_info(note);
+    for (const std::string& warning : catalogue.warnings) log_warning(warning);
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
     }

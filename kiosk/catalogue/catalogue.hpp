@@ -81,6 +81,9 @@ struct Catalogue {
     // What validation found worth saying of the stones kept: how a glTF piece's stones were
     // recognised and what they are made of, a line each.
     std::vector<std::string> notes;
+    // What a glTF piece's reader repaired or read past ("piece 'X': FILE: ..."), a line each:
+    // the piece is shown, and staff may want to look at the file.
+    std::vector<std::string> warnings;
     // The manifest's [blake2b] table: every other file (relative) and its digest in hex.
     std::map<std::string, std::string> digests;
     // The key that signed the manifest, as minisign prints its id; empty when unsigned.

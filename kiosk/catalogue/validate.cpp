@@ -6,6 +6,7 @@
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
 #include "catalogue_files.hpp"
+#include "piece/gltf_piece.hpp"
 #include "piece/metal_obj.hpp"
 #include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"
@@ -76,7 +77,12 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const Cat
                 continue;
             }
             for (const std::string& line : recognised) {
-                catalogue.notes.push_back("piece '" + stone.name + "': " + line);
+                if (line.starts_with(kWarningLine)) {
+                    catalogue.warnings.push_back("piece '" + stone.name +
+                                                 "': " + line.substr(kWarningLine.size()));
+                } else {
+                    catalogue.notes.push_back("piece '" + stone.name + "': " + line);
+                }
             }
             stone.placed = std::make_shared<const Piece>(std::move(placed).value());
         } else if (!stone.design.empty()) {

@@ -12,6 +12,7 @@
 #include <vector>
 
 #include "../support/cad_corpus.hpp"
+#include "piece/gltf_piece.hpp"
 #include "piece/piece_file.hpp"
 
 int main(int argc, char** argv) {
@@ -31,17 +32,16 @@ int main(int argc, char** argv) {
             log.clear();
             const auto start = std::chrono::steady_clock::now();
             piece = gem::load_piece(f.path, &log);
-            ms.push_back(std::chrono::duration<double, std::milli>(
-                             std::chrono::steady_clock::now() - start)
-                             .count());
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - start)
+                    .count());
         }
         std::sort(ms.begin(), ms.end());
-        std::printf("%s (%s): %s, read in %.1f ms (median of %d)\n", f.name.c_str(),
-                    f.what.c_str(),
+        std::printf("%s (%s): %s, read in %.1f ms (median of %d)\n", f.name.c_str(), f.what.c_str(),
                     piece ? gem::describe(piece.value()).c_str() : piece.error().c_str(),
                     ms[ms.size() / 2], runs);
         for (const std::string& line : log) {
-            if (line.starts_with("warning: ")) std::printf("    %s\n", line.c_str());
+            if (line.starts_with(gem::kWarningLine)) std::printf("    %s\n", line.c_str());
         }
     }
     return 0;

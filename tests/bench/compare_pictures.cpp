@@ -14,7 +14,8 @@
 
 int main(int argc, char** argv) {
     if (argc != 4 && argc != 6) {
-        std::fprintf(stderr, "usage: compare_pictures TEST.png REFERENCE.png MASK.png [--block N]\n");
+        std::fprintf(stderr,
+                     "usage: compare_pictures TEST.png REFERENCE.png MASK.png [--block N]\n");
         return 2;
     }
     const int block = argc == 6 ? std::atoi(argv[5]) : 4;

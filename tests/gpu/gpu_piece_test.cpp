@@ -9,10 +9,10 @@
 #include <cmath>
 #include <filesystem>
 
+#include "../support/cad_corpus.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
-#include "../support/cad_corpus.hpp"
 #include "gpu_test_support.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
@@ -287,9 +287,10 @@ TEST(GpuPiece, ACadRingWhoseOriginIsTheFingersCentreDrawsItsStoneBright) {
     }
     ASSERT_GT(covered, 300);
     const double ratio = on_gpu / exact;
-    std::printf("CAD solitaire: the stone's mean brightness on the GPU is %.2f of the reference's "
-                "(%d pixels)\n",
-                ratio, covered);
+    std::printf(
+        "CAD solitaire: the stone's mean brightness on the GPU is %.2f of the reference's "
+        "(%d pixels)\n",
+        ratio, covered);
     if (!(ratio > 0.6 && ratio < 1.5)) {
         gpu_test::write_artifact(gpu, "piece_cad_solitaire_gpu");
         gpu_test::write_artifact(reference.value(), "piece_cad_solitaire_reference");

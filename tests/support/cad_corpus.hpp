@@ -28,7 +28,7 @@ struct CorpusFile {
     std::string name;  // the file's name, e.g. "uncut-seat.glb"
     std::string what;  // the class of fault it reproduces
     std::filesystem::path path;
-    int stones = 0;    // how many stones the file holds
+    int stones = 0;  // how many stones the file holds
 };
 
 inline Stone round_brilliant(double width_mm) {
@@ -41,7 +41,8 @@ inline Stone prism(double side_mm, double length_mm) {
     // A triangular prism along z: three side faces and two ends, as a glass sample scene has.
     Stone s;
     const double h = side_mm * std::sqrt(3.0) / 2.0;
-    const glm::dvec3 tri[3] = {{-side_mm / 2, -h / 3, 0}, {side_mm / 2, -h / 3, 0}, {0, 2 * h / 3, 0}};
+    const glm::dvec3 tri[3] = {
+        {-side_mm / 2, -h / 3, 0}, {side_mm / 2, -h / 3, 0}, {0, 2 * h / 3, 0}};
     for (int end = 0; end < 2; ++end) {
         for (const glm::dvec3& t : tri) {
             s.vertices.push_back(t + glm::dvec3(0, 0, end ? length_mm / 2 : -length_mm / 2));
@@ -79,7 +80,8 @@ inline Soup stone_soup(const Stone& s, double unit = 1000.0,
     Soup soup;
     const auto at = [&](std::uint32_t v) { return to ? to(s.vertices[v]) : s.vertices[v]; };
     if (s.facets.empty()) {  // a stone given by triangles (the prism)
-        for (const MeshTriangle& t : s.triangles) soup.add(at(t.v[0]), at(t.v[1]), at(t.v[2]), unit);
+        for (const MeshTriangle& t : s.triangles)
+            soup.add(at(t.v[0]), at(t.v[1]), at(t.v[2]), unit);
         return soup;
     }
     for (std::size_t f = 0; f < s.facets.size(); ++f) {
@@ -130,11 +132,12 @@ inline int gold(Glb& glb, const std::string& name = "Gold 18K", json extensions 
 }
 
 inline int transmissive(Glb& glb, const std::string& name) {
-    return glb.material({{"name", name},
-                         {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.0}}},
-                         {"extensions",
-                          {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
-                           {"KHR_materials_ior", {{"ior", 2.42}}}}}});
+    return glb.material(
+        {{"name", name},
+         {"pbrMetallicRoughness", {{"metallicFactor", 0.0}, {"roughnessFactor", 0.0}}},
+         {"extensions",
+          {{"KHR_materials_transmission", {{"transmissionFactor", 1.0}}},
+           {"KHR_materials_ior", {{"ior", 2.42}}}}}});
 }
 
 // The height of the stone's culet below its girdle (mm, positive).
@@ -161,8 +164,10 @@ inline void solitaire(Glb& glb, double sunk_mm, double unit = 1000.0,
     }
     const int diamond = transmissive(glb, "Diamond BIG");
     if (metal_material < 0) metal_material = gold(glb);
-    const int gem = glb.mesh_of("Brilliant", json::array({primitive(glb, stone_soup(stone, unit, {}, placed), diamond)}));
-    const int band = glb.mesh_of("Ring", json::array({primitive(glb, metal_soup(metal, unit), metal_material)}));
+    const int gem = glb.mesh_of(
+        "Brilliant", json::array({primitive(glb, stone_soup(stone, unit, {}, placed), diamond)}));
+    const int band =
+        glb.mesh_of("Ring", json::array({primitive(glb, metal_soup(metal, unit), metal_material)}));
     const int a = glb.child({{"name", "Diamond BIG"}, {"mesh", gem}});
     const int b = glb.child({{"name", "Shank"}, {"mesh", band}});
     glb.node({{"name", "Solitaire"}, {"children", {a, b}}});
@@ -181,7 +186,8 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
         Glb glb;
         const Stone stone = round_brilliant(6.5);
         const int m = transmissive(glb, "Diamond");
-        const int mesh = glb.mesh_of("Round 6.5", json::array({primitive(glb, stone_soup(stone), m)}));
+        const int mesh =
+            glb.mesh_of("Round 6.5", json::array({primitive(glb, stone_soup(stone), m)}));
         glb.node({{"name", "Round 6.5"}, {"mesh", mesh}});
         save(glb, "loose-stone.glb", "no metal (a loose stone)", 1);
     }
@@ -227,7 +233,8 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
         Soup curve;
         for (int i = 0; i <= 32; ++i) {
             const double a = 2.0 * std::numbers::pi * i / 32.0;
-            curve.positions.push_back(glm::dvec3(0, 11.0 * std::cos(a), 11.0 * std::sin(a)) / 1000.0);
+            curve.positions.push_back(glm::dvec3(0, 11.0 * std::cos(a), 11.0 * std::sin(a)) /
+                                      1000.0);
             curve.indices.push_back(static_cast<std::uint32_t>(i));
         }
         json& band = glb.doc()["meshes"][1]["primitives"];
@@ -245,7 +252,8 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
         for (std::size_t f = 0; f < stone.facets.size(); ++f) {
             if (stone.facets[f].plane.n.y > stone.facets[table].plane.n.y) table = f;
         }
-        Soup soup = stone_soup(stone, 1000.0, [&](std::size_t f) { return f != table; }, placed);
+        Soup soup = stone_soup(
+            stone, 1000.0, [&](std::size_t f) { return f != table; }, placed);
         // The table fanned with a corner m in the middle of its edge a → c: (x, a, m), (x, m, c)
         // and the sliver (a, c, m) that closes the T-junction against the star across it.
         const auto& loop = stone.facets[table].loop;
@@ -284,7 +292,8 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
             [&](glm::dvec3 p) { return p + glm::dvec3(0, lift, 0); });
         const int diamond = transmissive(glb, "Diamond");
         const int gem = glb.mesh_of("Round", json::array({primitive(glb, soup, diamond)}));
-        const int band = glb.mesh_of("Ring", json::array({primitive(glb, metal_soup(shank()), gold(glb))}));
+        const int band =
+            glb.mesh_of("Ring", json::array({primitive(glb, metal_soup(shank()), gold(glb))}));
         glb.node({{"name", "Centre stone"}, {"mesh", gem}});
         glb.node({{"name", "Shank"}, {"mesh", band}});
         save(glb, "open-stone.glb", "a stone with a facet missing", 1);
@@ -315,23 +324,27 @@ inline std::vector<CorpusFile> write_corpus(const std::filesystem::path& dir) {
             const Soup one = stone_soup(stone, 1000.0, {}, [&](glm::dvec3 p) {
                 return p.x * along + p.y * outward + p.z * side + lift * outward;
             });
-            for (std::uint32_t k : one.indices) merged.indices.push_back(k + static_cast<std::uint32_t>(merged.positions.size()));
-            merged.positions.insert(merged.positions.end(), one.positions.begin(), one.positions.end());
+            for (std::uint32_t k : one.indices)
+                merged.indices.push_back(k + static_cast<std::uint32_t>(merged.positions.size()));
+            merged.positions.insert(merged.positions.end(), one.positions.begin(),
+                                    one.positions.end());
             merged.normals.insert(merged.normals.end(), one.normals.begin(), one.normals.end());
         }
-        const int webgi = glb.material(
-            {{"name", "Material_12"},
-             {"extensions",
-              {{"WEBGI_materials_diamond",
-                {{"isDiamond", true},
-                 {"color", 16777215},
-                 {"refractiveIndex", 2.6},
-                 {"dispersion", 0.012},
-                 {"boostFactors", {{"x", 0.892}, {"y", 0.892}, {"z", 0.986}}},
-                 {"rayBounces", 5}}}}}});
+        const int webgi =
+            glb.material({{"name", "Material_12"},
+                          {"extensions",
+                           {{"WEBGI_materials_diamond",
+                             {{"isDiamond", true},
+                              {"color", 16777215},
+                              {"refractiveIndex", 2.6},
+                              {"dispersion", 0.012},
+                              {"boostFactors", {{"x", 0.892}, {"y", 0.892}, {"z", 0.986}}},
+                              {"rayBounces", 5}}}}}});
         glb.doc()["extensionsUsed"] = {"WEBGI_materials_diamond"};
         const int gems = glb.mesh_of("Object_3", json::array({primitive(glb, merged, webgi)}));
-        const int band = glb.mesh_of("Object_5", json::array({primitive(glb, metal_soup(shank()), gold(glb, "Material_4"))}));
+        const int band = glb.mesh_of(
+            "Object_5",
+            json::array({primitive(glb, metal_soup(shank()), gold(glb, "Material_4"))}));
         glb.node({{"name", "Object_3"}, {"mesh", gems}});
         glb.node({{"name", "Object_5"}, {"mesh", band}});
         save(glb, "webgi-merged-band.glb", "a vendor's diamond material on 52 merged stones", 52);
@@ -356,14 +369,16 @@ inline std::vector<CorpusFile> write_large(const std::filesystem::path& dir) {
         Glb glb;
         solitaire(glb, 0.0, 1000.0, {}, shank(9.0, 1024, 440));
         glb.write(dir / "shank-900k.glb");
-        out.push_back({"shank-900k.glb", "a shank of 901,120 triangles", dir / "shank-900k.glb", 1});
+        out.push_back(
+            {"shank-900k.glb", "a shank of 901,120 triangles", dir / "shank-900k.glb", 1});
     }
     {
         Glb glb;
         solitaire(glb, 0.0);
         const Stone melee = round_brilliant(1.0);
         const int m = transmissive(glb, "Diamond melee");
-        const int mesh = glb.mesh_of("Melee 1.0", json::array({primitive(glb, stone_soup(melee), m)}));
+        const int mesh =
+            glb.mesh_of("Melee 1.0", json::array({primitive(glb, stone_soup(melee), m)}));
         int placed = 0;
         for (int row = 0; row < 2; ++row) {
             for (int i = 0; i < 60; ++i) {
@@ -371,8 +386,9 @@ inline std::vector<CorpusFile> write_large(const std::filesystem::path& dir) {
                 const double r = 10.0 + pavilion_depth(melee) - 0.02;
                 glb.node({{"name", "Melee " + std::to_string(++placed)},
                           {"mesh", mesh},
-                          {"translation", {(row ? 0.55 : -0.55) / 1000.0, r * std::cos(a) / 1000.0,
-                                           r * std::sin(a) / 1000.0}},
+                          {"translation",
+                           {(row ? 0.55 : -0.55) / 1000.0, r * std::cos(a) / 1000.0,
+                            r * std::sin(a) / 1000.0}},
                           {"rotation", {std::sin(a / 2.0), 0.0, 0.0, std::cos(a / 2.0)}}});
             }
         }

@@ -6,6 +6,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstddef>
+#include <vector>
 
 #include "piece/piece.hpp"
 
@@ -20,6 +21,21 @@ inline double corner_gap(const Piece& a, const Piece& b, std::size_t i) {
             nearest = std::min(nearest, glm::length(p - b.stones[i].placement.to_piece(w)));
         }
         worst = std::max(worst, nearest);
+    }
+    return worst;
+}
+
+// The farthest any corner of the piece's stone `stone` lies from the nearest of `expected`,
+// corners in the piece's frame (mm): a stone against what it was made from.
+inline double corner_error(const Piece& piece, std::size_t stone,
+                           const std::vector<glm::dvec3>& expected) {
+    double worst = 0.0;
+    const PieceStone& s = piece.stones[stone];
+    for (const glm::dvec3& v : piece.kinds[s.kind].vertices) {
+        const glm::dvec3 p = s.placement.to_piece(v);
+        double best = HUGE_VAL;
+        for (const glm::dvec3& e : expected) best = std::min(best, glm::length(p - e));
+        worst = std::max(worst, best);
     }
     return worst;
 }

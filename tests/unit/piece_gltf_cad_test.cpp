@@ -14,6 +14,7 @@
 #include <vector>
 
 #include "../support/cad_corpus.hpp"
+#include "../support/piece_corners.hpp"
 #include "geometry/mesh_repair.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_stone_evidence.hpp"
@@ -26,6 +27,7 @@ namespace {
 namespace fs = std::filesystem;
 namespace cad = test_support::cad;
 using nlohmann::json;
+using test_support::corner_error;
 
 struct Loaded {
     Piece piece;
@@ -72,19 +74,19 @@ std::string all(const Loaded& l) {
     return out;
 }
 
-// The farthest a placed stone's corner lies from the nearest of the cut's corners placed by
-// `to` (mm).
-double corner_error(const Piece& piece, std::size_t i, const Stone& cut,
-                    const std::function<glm::dvec3(glm::dvec3)>& to) {
-    double worst = 0.0;
-    const PieceStone& s = piece.stones[i];
-    for (const glm::dvec3& v : piece.kinds[s.kind].vertices) {
-        const glm::dvec3 p = s.placement.to_piece(v);
-        double best = HUGE_VAL;
-        for (const glm::dvec3& e : cut.vertices) best = std::min(best, glm::length(p - to(e)));
-        worst = std::max(worst, best);
-    }
-    return worst;
+// The cut's corners, each taken by `to` (mm).
+std::vector<glm::dvec3> placed(const Stone& cut, const std::function<glm::dvec3(glm::dvec3)>& to) {
+    std::vector<glm::dvec3> out;
+    for (const glm::dvec3& v : cut.vertices) out.push_back(to(v));
+    return out;
+}
+
+// The centre stone read back as the 6.5 mm brilliant it was made from: every facet, convex.
+void expect_the_brilliant(const Loaded& l) {
+    const Stone cut = cad::round_brilliant(6.5);
+    const Stone& stone = l.piece.stone_of(0);
+    EXPECT_EQ(stone.facets.size(), cut.facets.size()) << all(l);
+    EXPECT_TRUE(stone.convex);
 }
 
 // Where the reader puts a centre stone that the file's origin lies outside of (the finger's
@@ -100,7 +102,8 @@ TEST(GltfCadCorpus, EveryFileLoads) {
     for (const cad::CorpusFile& f : cad::write_corpus(dir)) {
         ASSERT_TRUE(corpus().contains(f.name)) << f.name;
         EXPECT_EQ(corpus().at(f.name).piece.stones.size(), static_cast<std::size_t>(f.stones))
-            << f.name << "\n" << all(corpus().at(f.name));
+            << f.name << "\n"
+            << all(corpus().at(f.name));
     }
 }
 
@@ -108,10 +111,9 @@ TEST(GltfCadCorpus, ALooseStoneIsAPieceWithAWarning) {
     const Loaded& l = file("loose-stone.glb");
     EXPECT_TRUE(l.piece.metal.positions.empty());
     EXPECT_EQ(warnings_with(l, "floats off its seat").size(), 1u) << all(l);
-    const Stone cut = cad::round_brilliant(6.5);
-    EXPECT_EQ(l.piece.stone_of(0).facets.size(), cut.facets.size());
+    expect_the_brilliant(l);
     // Its origin lies inside the stone: kept, so every corner is where the file has it.
-    EXPECT_LT(corner_error(l.piece, 0, cut, [](glm::dvec3 p) { return p; }), 1e-5);
+    EXPECT_LT(corner_error(l.piece, 0, cad::round_brilliant(6.5).vertices), 1e-5);
 }
 
 TEST(GltfCadCorpus, PrismsBeforeABackdropAreStonesAndTheBackdropMetal) {
@@ -123,8 +125,9 @@ TEST(GltfCadCorpus, PrismsBeforeABackdropAreStonesAndTheBackdropMetal) {
     }
     EXPECT_EQ(l.piece.metal.triangle_count(), 2u);  // the backdrop
     // Prism 7: n_d 1.55, dispersion 0.5 → V_d 40, so n_F − n_C = 0.55 / 40 (worked by hand).
-    const auto seven = std::find_if(l.piece.stones.begin(), l.piece.stones.end(),
-                                    [](const PieceStone& s) { return s.role.find("'Prism.7'") != std::string::npos; });
+    const auto seven = std::find_if(
+        l.piece.stones.begin(), l.piece.stones.end(),
+        [](const PieceStone& s) { return s.role.find("'Prism.7'") != std::string::npos; });
     ASSERT_NE(seven, l.piece.stones.end());
     const Material& m = l.piece.kinds[seven->kind].material;
     EXPECT_NEAR(m.index(587.6), 1.55, 1e-9);
@@ -151,10 +154,7 @@ TEST(GltfCadCorpus, LinesAndPointsAreSkippedWithAWarningEach) {
 
 TEST(GltfCadCorpus, TrianglesWithNoAreaAreDroppedAndTheStoneKeepsItsFacets) {
     const Loaded& l = file("zero-area.glb");
-    const Stone cut = cad::round_brilliant(6.5);
-    const Stone& stone = l.piece.stone_of(0);
-    EXPECT_EQ(stone.facets.size(), cut.facets.size()) << all(l);
-    EXPECT_TRUE(stone.convex);
+    expect_the_brilliant(l);
     EXPECT_EQ(warnings_with(l, "1 triangle with no area dropped").size(), 1u) << all(l);
     EXPECT_EQ(warnings_with(l, "2 metal triangle(s) with no area dropped").size(), 1u) << all(l);
     EXPECT_EQ(l.piece.metal.triangle_count(), cad::shank().triangle_count());
@@ -162,13 +162,11 @@ TEST(GltfCadCorpus, TrianglesWithNoAreaAreDroppedAndTheStoneKeepsItsFacets) {
 
 TEST(GltfCadCorpus, AStoneMissingAWholeFacetIsClosedAsItWas) {
     const Loaded& l = file("open-stone.glb");
+    expect_the_brilliant(l);
     const Stone cut = cad::round_brilliant(6.5);
-    const Stone& stone = l.piece.stone_of(0);
-    EXPECT_EQ(stone.facets.size(), cut.facets.size()) << all(l);
-    EXPECT_TRUE(stone.convex);
     EXPECT_EQ(warnings_with(l, "1 hole filled").size(), 1u) << all(l);
     const glm::dvec3 c = centroid(cut);
-    EXPECT_LT(corner_error(l.piece, 0, cut, [&](glm::dvec3 p) { return p - c; }), 1e-5);
+    EXPECT_LT(corner_error(l.piece, 0, placed(cut, [&](glm::dvec3 p) { return p - c; })), 1e-5);
 }
 
 TEST(GltfCadCorpus, AShankWithAnIndexAndAClearCoatIsMetal) {
@@ -207,7 +205,7 @@ TEST(GltfCadCorpus, MillimetresAndZUpAreSeenAndTurned) {
     // centre, which is the stone's lift below it.
     const Stone cut = cad::round_brilliant(6.5);
     const glm::dvec3 c = centroid(cut);
-    EXPECT_LT(corner_error(l.piece, 0, cut, [&](glm::dvec3 p) { return p - c; }), 1e-4);
+    EXPECT_LT(corner_error(l.piece, 0, placed(cut, [&](glm::dvec3 p) { return p - c; })), 1e-4);
     const double lift = 10.0 + cad::pavilion_depth(cut);
     float top = -1e9f;
     for (const glm::vec3& p : l.piece.metal.positions) top = std::max(top, p.y);
@@ -230,8 +228,8 @@ TEST(GltfCadCorpus, AVendorDiamondsColourAndItsNo) {
     const Stone cut = cad::round_brilliant(2.0);
     const auto loose = [&](json webgi) {
         test_support::Glb glb;
-        const int m = glb.material({{"name", "Material_1"},
-                                    {"extensions", {{"WEBGI_materials_diamond", webgi}}}});
+        const int m = glb.material(
+            {{"name", "Material_1"}, {"extensions", {{"WEBGI_materials_diamond", webgi}}}});
         const int mesh =
             glb.mesh_of("Object_1", json::array({cad::primitive(glb, cad::stone_soup(cut), m)}));
         glb.node({{"name", "Object_1"}, {"mesh", mesh}});
@@ -259,7 +257,7 @@ TEST(GltfStoneEvidence, SignsWeighAsDocumented) {
     m.name = "Material.002";
     m.extensions = {"KHR_materials_ior", "KHR_materials_clearcoat"};
     EXPECT_EQ(stone_evidence(part, &m).score, 1);  // an index alone does not make a stone
-    part.node = "Diamond setting";                // both words: neither
+    part.node = "Diamond setting";                 // both words: neither
     EXPECT_EQ(stone_evidence(part, &m).score, 1);
     part.node = "Prong_3";
     EXPECT_EQ(stone_evidence(part, &m).score, -1);
@@ -310,8 +308,8 @@ TEST(MetalSimplify, ACadShankStaysWithinAPixelAtTheClosestView) {
     const MetalMesh full = cad::shank(9.0, 512, 220);
     MetalMesh simple = full;
     EXPECT_EQ(simplify_metal(simple, kChordToleranceMm), 225280u);
-    std::printf("225,280 triangles simplified to %zu asking for %.4f mm\n",
-                simple.triangle_count(), kChordToleranceMm);
+    std::printf("225,280 triangles simplified to %zu asking for %.4f mm\n", simple.triangle_count(),
+                kChordToleranceMm);
     EXPECT_LT(simple.triangle_count(), full.triangle_count() / 4);
     ASSERT_GT(simple.triangle_count(), 0u);
     std::set<std::array<float, 3>> corners;

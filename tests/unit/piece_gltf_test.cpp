@@ -16,6 +16,7 @@
 
 #include "../support/draco_mesh.hpp"
 #include "../support/glb_writer.hpp"
+#include "../support/piece_corners.hpp"
 #include "geometry/cuts.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/piece_file.hpp"
@@ -25,6 +26,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using nlohmann::json;
+using test_support::corner_error;
 using test_support::Glb;
 
 Stone brilliant(double width_mm) {
@@ -66,20 +68,6 @@ fs::path artifact(const std::string& name) {
     const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "gltf";
     fs::create_directories(dir);
     return dir / name;
-}
-
-// The farthest a placed kind's corner lies from the nearest of `expected` (mm).
-double corner_error(const Piece& piece, std::size_t stone,
-                    const std::vector<glm::dvec3>& expected) {
-    double worst = 0.0;
-    const PieceStone& s = piece.stones[stone];
-    for (const glm::dvec3& v : piece.kinds[s.kind].vertices) {
-        const glm::dvec3 p = s.placement.to_piece(v);
-        double best = HUGE_VAL;
-        for (const glm::dvec3& e : expected) best = std::min(best, glm::length(p - e));
-        worst = std::max(worst, best);
-    }
-    return worst;
 }
 
 TEST(GltfPiece, StonesAndMetalAsACadExportWritesThem) {
@@ -405,8 +393,9 @@ TEST(GltfPiece, DamagedAndUnsupportedFilesAreOneMessage) {
     ASSERT_TRUE(filled) << filled.error();
     EXPECT_EQ(filled.value().stone_of(0).facets.size(), s.facets.size());
     EXPECT_TRUE(std::any_of(log.begin(), log.end(), [](const std::string& l) {
-        return l.find("node 'Diamond' (mesh 'd'): repaired; open (8 boundary edges): 1 hole "
-                      "filled") != std::string::npos;
+        return l.find(
+                   "node 'Diamond' (mesh 'd'): repaired; open (8 boundary edges): 1 hole "
+                   "filled") != std::string::npos;
     })) << log.front();
 
     Glb bare;

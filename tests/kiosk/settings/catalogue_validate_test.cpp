@@ -293,17 +293,21 @@ piece = "pieces/open-heart.glb"
     ASSERT_NE(c.stones[2].placed, nullptr);
     EXPECT_EQ(c.stones[2].placed->kinds[0].facets.size(), hearts.value().kinds[0].facets.size());
     EXPECT_FALSE(c.stones[2].placed->kinds[0].convex);
-    const auto note = [&](const std::string& piece, const std::string& text) {
-        return std::any_of(c.notes.begin(), c.notes.end(), [&](const std::string& n) {
+    const auto said = [&](const std::vector<std::string>& lines, const std::string& piece,
+                          const std::string& text) {
+        return std::any_of(lines.begin(), lines.end(), [&](const std::string& n) {
             return n.rfind("piece '" + piece + "': ", 0) == 0 && n.find(text) != std::string::npos;
         });
     };
-    EXPECT_TRUE(note("Halo", "stone node 'centre'"));
-    EXPECT_TRUE(note("Halo", "transmissive"));
-    EXPECT_TRUE(note("Open halo", "node 'centre' (mesh 'gem 1 round-brilliant'): repaired; open "
-                                  "(3 boundary edges): closed by the planes of its facets"));
-    EXPECT_TRUE(note("Open heart", "node 'centre' (mesh 'gem 1 heart'): repaired; open (3 "
-                                   "boundary edges): 1 hole filled"));
+    EXPECT_TRUE(said(c.notes, "Halo", "stone node 'centre'"));
+    EXPECT_TRUE(said(c.notes, "Halo", "transmissive"));
+    EXPECT_EQ(c.warnings.size(), 2u);
+    EXPECT_TRUE(said(c.warnings, "Open halo",
+                     "open-halo.glb: node 'centre' (mesh 'gem 1 round-brilliant'): repaired; "
+                     "open (3 boundary edges): closed by the planes of its facets"));
+    EXPECT_TRUE(said(c.warnings, "Open heart",
+                     "open-heart.glb: node 'centre' (mesh 'gem 1 heart'): repaired; open (3 "
+                     "boundary edges): 1 hole filled"));
     ASSERT_EQ(c.left_out.size(), 1u);
     EXPECT_EQ(c.left_out[0].rfind("piece 'Cut short' left out: pieces/truncated.glb: ", 0), 0u)
         << c.left_out[0];
