@@ -5,16 +5,15 @@
 #include <cmath>
 #include <cstdio>
 #include <map>
-#include <numbers>
 #include <numeric>
 #include <set>
 #include <tuple>
 
 #include "geometry/mesh_repair.hpp"
 #include "geometry/polyhedron.hpp"
-#include "geometry/triangulate.hpp"
 #include "import/gltf_document.hpp"
 #include "import/import_text.hpp"
+#include "piece/gltf_piece_frame.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/gltf_stone_evidence.hpp"
 #include "piece/metal_simplify.hpp"
@@ -309,86 +308,6 @@ Result<Stone> repaired_stone(const std::vector<glm::dvec3>& corners,
     return stone;
 }
 
-// How many millimetres one of the file's units is. glTF says metres, and most exporters
-// convert; some write CAD's millimetres as they are, which makes a 20 mm ring 20 m across. A
-// piece of jewellery is between a 0.3 mm melee and a 400 mm necklace: metres when that makes
-// it so, else millimetres when that does.
-double millimetres_per_unit(const import::GltfDocument& doc, std::string& why) {
-    glm::dvec3 lo(HUGE_VAL), hi(-HUGE_VAL);
-    for (const import::GltfPart& part : doc.parts) {
-        for (const glm::dvec3& p : part.positions) {
-            const glm::dvec3 q(part.to_scene * glm::dvec4(p, 1.0));
-            lo = glm::min(lo, q);
-            hi = glm::max(hi, q);
-        }
-    }
-    const double across = glm::length(hi - lo);
-    const auto jewellery = [](double mm) { return mm >= 0.3 && mm <= 400.0; };
-    if (!(across > 0.0) || jewellery(across * 1000.0) || !jewellery(across)) return 1000.0;
-    char text[200];
-    std::snprintf(text, sizeof text,
-                  "read in millimetres, not glTF's metres: the piece is %.4g units across, and "
-                  "no piece of jewellery is %.4g m",
-                  across, across);
-    why = text;
-    return 1.0;
-}
-
-// The piece turned so that its centre stone's table faces +y, the piece's up, where the file
-// put it facing another axis (CAD's z up, written without turning). Only a stone whose largest
-// facet is half as large again as any other (a table) says which way is up, and only when it
-// lies within 30° of an axis other than +y. Returns what was done, or empty.
-std::string turn_table_up(Piece& piece) {
-    if (piece.stones.empty()) return {};
-    const Stone& hero = piece.stone_of(0);
-    double largest = 0.0, second = 0.0;
-    glm::dvec3 table(0.0);
-    for (const Facet& f : hero.facets) {
-        const double a = 0.5 * glm::length(newell_normal(hero.vertices, f.loop));
-        if (a > largest) {
-            second = largest;
-            largest = a;
-            table = f.plane.n;
-        } else {
-            second = std::max(second, a);
-        }
-    }
-    if (!(largest > 1.5 * second)) return {};
-    const glm::dvec3 up = glm::normalize(piece.stones[0].placement.rotation * table);
-    const double cos30 = std::cos(std::numbers::pi / 6.0);
-    if (up.y > cos30) return {};
-    glm::dmat3 turn(1.0);
-    std::string axis;
-    // Columns of glm matrices: turn * up = +y.
-    if (up.z > cos30) {
-        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, -1), glm::dvec3(0, 1, 0));
-        axis = "+z";
-    } else if (up.z < -cos30) {
-        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1), glm::dvec3(0, -1, 0));
-        axis = "-z";
-    } else if (up.x > cos30) {
-        turn = glm::dmat3(glm::dvec3(0, 1, 0), glm::dvec3(-1, 0, 0), glm::dvec3(0, 0, 1));
-        axis = "+x";
-    } else if (up.x < -cos30) {
-        turn = glm::dmat3(glm::dvec3(0, -1, 0), glm::dvec3(1, 0, 0), glm::dvec3(0, 0, 1));
-        axis = "-x";
-    } else if (up.y < -cos30) {
-        turn = glm::dmat3(glm::dvec3(1, 0, 0), glm::dvec3(0, -1, 0), glm::dvec3(0, 0, -1));
-        axis = "-y";
-    } else {
-        return {};
-    }
-    for (PieceStone& s : piece.stones) {
-        s.placement.rotation = turn * s.placement.rotation;
-        s.placement.position = turn * s.placement.position;
-    }
-    const glm::mat3 t(turn);
-    for (glm::vec3& p : piece.metal.positions) p = t * p;
-    for (glm::vec3& n : piece.metal.normals) n = t * n;
-    return "turned so that up is +y: the centre stone's table faced " + axis +
-           " (the file was written with another axis up)";
-}
-
 }  // namespace
 
 Result<Piece> load_gltf_piece(const std::filesystem::path& path, std::vector<std::string>* log) {
@@ -646,18 +565,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
                                        });
     std::rotate(piece.stones.begin(), hero, hero + 1);
     if (const std::string turned = turn_table_up(piece); !turned.empty()) warn(turned);
-    // The centre stone at the piece's origin, as the settings place it (settings.hpp): CAD
-    // puts the origin at the finger's centre, and the GPU's virtual cube, which holds what the
-    // stones see of the metal, is taken from the origin (frame_renderer.hpp); from the finger's
-    // centre it sees the inside of the shank, and a stone 13 mm above it came out black.
-    // A file whose origin lies within the centre stone (this project's own, a loose stone's)
-    // keeps it.
-    const glm::dvec3 centre = piece.stones.front().placement.position;
-    if (glm::length(centre) > bounding_radius(piece.stone_of(0).vertices)) {
-        for (PieceStone& s : piece.stones) s.placement.position -= centre;
-        for (glm::vec3& p : piece.metal.positions) p -= glm::vec3(centre);
-        piece.file_origin_mm = centre;
-    }
+    centre_on_the_centre_stone(piece);
     if (log != nullptr && doc.images_ignored > 0) {
         log->push_back(std::to_string(doc.images_ignored) +
                        " texture image(s) ignored: a piece is shaded by its materials' factors");
