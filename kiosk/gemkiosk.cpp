@@ -2,6 +2,9 @@
 // config file it is the product; the other options serve CI, benchmarks and remote support.
 #include <CLI/CLI.hpp>
 
+#include <iostream>
+
+#include "app/config_check.hpp"
 #include "app/kiosk_run.hpp"
 #include "settings/kiosk_config.hpp"
 
@@ -10,6 +13,10 @@ int main(int argc, char** argv) {
     run.config_file = gem::kiosk::kDefaultConfigFile;
     CLI::App app{"gemkiosk: faceted gemstones with real refraction, fullscreen"};
     app.add_option("-c,--config", run.config_file, "configuration file (TOML)");
+    std::string check;
+    app.add_option("--check-config", check,
+                   "print every problem of this config file and exit, 1 on any (run it after each "
+                   "edit, before a restart)");
     std::string backend;
     app.add_option("--backend", backend, "drm or headless (overrides display.backend)")
         ->check(CLI::IsMember({"drm", "headless"}));
@@ -39,6 +46,7 @@ int main(int argc, char** argv) {
         ->check(CLI::NonNegativeNumber);
     app.add_option("--stats", run.stats_csv, "write every frame's times to this CSV at exit");
     CLI11_PARSE(app, argc, argv);
+    if (!check.empty()) return gem::kiosk::check_config(check, std::cout) == 0 ? 0 : 1;
 
     if (!backend.empty()) run.backend = backend;
     run.width = width;

@@ -7,6 +7,7 @@
 #include <chrono>
 #include <cmath>
 #include <cstdio>
+#include <cstdlib>
 #include <limits>
 #include <numbers>
 
@@ -19,6 +20,7 @@
 #include "display/open_display.hpp"
 #include "input/touch_mapping.hpp"
 #include "render/camera.hpp"
+#include "settings/config_fallback.hpp"
 #include "service/log.hpp"
 
 namespace gem::kiosk {
@@ -28,7 +30,35 @@ namespace {
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
 
-CatalogueOptions catalogue_options(const KioskConfig& config) {
+// The trust catalogues are checked with: the keys the config trusts now, or those kept with the
+// last good config when it is set aside (settings/config_fallback.hpp).
+CatalogueTrust catalogue_trust(const ResolvedConfig& resolved, std::vector<std::string>& problems) {
+    std::vector<TrustedKeyText> texts;
+    for (const KeptKey& key : resolved.trusted_keys) {
+        texts.push_back(TrustedKeyText{key.file.string(), key.text});
+    }
+    CatalogueTrust trust = parse_trust(resolved.signatures_required, texts, problems);
+    for (const std::string& problem : problems) {
+        log_error("trusted key left out: " + problem +
+                  "; catalogues signed with it will be refused");
+    }
+    if (!trust.required) {
+        log_warning(
+            "catalogues are not authenticated: [catalogue] trusted_keys lists no key, so "
+            "any well-formed catalogue in the inbox or a watched folder is shown");
+    } else if (trust.keys.empty()) {
+        log_error("no trusted key could be read: every delivered catalogue will be refused");
+    } else {
+        std::string keys;
+        for (const MinisignKey& key : trust.keys) {
+            keys += (keys.empty() ? "" : ", ") + key_id_text(key.id) + " (" + key.source + ")";
+        }
+        log_info("catalogues must be signed by a trusted key: " + keys);
+    }
+    return trust;
+}
+
+CatalogueOptions catalogue_options(const KioskConfig& config, const ResolvedConfig& resolved) {
     CatalogueOptions options;
     options.inbox_dir = config.catalogue.inbox_dir;
     options.extra_dirs = config.catalogue.watch_dirs;
@@ -36,27 +66,31 @@ CatalogueOptions catalogue_options(const KioskConfig& config) {
     options.default_catalogue = config.catalogue.default_dir;
     options.settle_time =
         std::chrono::milliseconds(static_cast<long>(config.catalogue.settle_s * 1000.0));
-    std::vector<std::string> problems;
-    options.trust = load_trust(config.catalogue.trusted_keys, problems);
-    options.trust.required = options.trust.required || config.catalogue.trusted_keys_unreadable;
-    for (const std::string& problem : problems) {
-        log_error("trusted key left out: " + problem +
-                  "; catalogues signed with it will be refused");
-    }
-    if (!options.trust.required) {
-        log_warning(
-            "catalogues are not authenticated: [catalogue] trusted_keys lists no key, so "
-            "any well-formed catalogue in the inbox or a watched folder is shown");
-    } else if (options.trust.keys.empty()) {
-        log_error("no trusted key could be read: every delivered catalogue will be refused");
-    } else {
-        std::string keys;
-        for (const MinisignKey& key : options.trust.keys) {
-            keys += (keys.empty() ? "" : ", ") + key_id_text(key.id) + " (" + key.source + ")";
-        }
-        log_info("catalogues must be signed by a trusted key: " + keys);
-    }
+    options.deliveries_refused_because = resolved.deliveries_refused_because;
     return options;
+}
+
+// --state-dir, else systemd's StateDirectory= ($STATE_DIRECTORY, systemd.exec(5): "a
+// colon-separated list" of the unit's state directories; this unit has one), else none.
+std::filesystem::path started_state_dir(const KioskRun& run) {
+    if (run.state_dir) return *run.state_dir;
+    const char* from_systemd = std::getenv("STATE_DIRECTORY");
+    if (from_systemd == nullptr) return {};
+    const std::string_view dirs(from_systemd);
+    return std::filesystem::path(dirs.substr(0, dirs.find(':')));
+}
+
+// Keeps a config that parsed, validated and whose keys all parse as the last good one.
+void keep_if_good(const ResolvedConfig& resolved, bool keys_parsed,
+                  const std::filesystem::path& state_dir) {
+    if (!resolved.good || !keys_parsed || state_dir.empty()) return;
+    auto kept = keep_last_good_config(state_dir, *resolved.good);
+    if (!kept) {
+        log_warning("the config could not be kept as the last good one: " + kept.error());
+    } else if (kept.value()) {
+        log_info("config " + resolved.good->source.string() + " kept as the last good one in " +
+                 (state_dir / kLastGoodConfigName).string());
+    }
 }
 
 }  // namespace
@@ -72,9 +106,12 @@ Result<std::unique_ptr<KioskSession>> KioskSession::make(const KioskRun& run) {
 KioskSession::~KioskSession() = default;
 
 Result<bool> KioskSession::configure() {
-    const ConfigLoad load = load_config(run_.config_file);
-    log_config_errors(load);
-    config_ = load.config;
+    // The last good config lives in the state folder the kiosk is started with, never one the
+    // file names (settings/last_good_config.hpp).
+    const std::filesystem::path kept_in = started_state_dir(run_);
+    const ResolvedConfig resolved = resolve_config(run_.config_file, kept_in);
+    for (const std::string& error : resolved.errors) log_error(error);
+    config_ = resolved.config;
     set_log_threshold(config_.log_level);
     // The command line outranks the file: CI and support runs say exactly what they need.
     if (run_.backend) config_.display.backend = *run_.backend;
@@ -98,7 +135,10 @@ Result<bool> KioskSession::configure() {
     render_.stone_share = config_.picture.stone_share;
 
     selection_ = std::make_unique<SceneSelection>(config_.backgrounds, config_.lightings);
-    const CatalogueOptions catalogue = catalogue_options(config_);
+    CatalogueOptions catalogue = catalogue_options(config_, resolved);
+    std::vector<std::string> key_problems;
+    catalogue.trust = catalogue_trust(resolved, key_problems);
+    keep_if_good(resolved, key_problems.empty(), kept_in);
     auto startup = load_startup_catalogue(catalogue);
     if (startup) {
         log_info("catalogue '" + startup.value().name + "' with " +

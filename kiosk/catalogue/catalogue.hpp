@@ -39,6 +39,10 @@ struct CatalogueOptions {
     // Keys a catalogue's manifest must be signed with (config [catalogue] trusted_keys, read at
     // start); not required: catalogues are taken unsigned (catalogue_signature.hpp).
     CatalogueTrust trust;
+    // Non-empty: no delivered catalogue is installed, and this says why at every delivery (the
+    // kiosk's config could not be read or parsed: kiosk/settings/config_fallback.hpp). The
+    // catalogue is left where it is, to be installed once the kiosk starts on a good config.
+    std::string deliveries_refused_because;
 };
 
 enum class RingKind {

@@ -9,11 +9,12 @@ namespace gem::kiosk {
 
 namespace fs = std::filesystem;
 
-CatalogueTrust load_trust(const std::vector<fs::path>& files, std::vector<std::string>& problems) {
+CatalogueTrust parse_trust(bool required, const std::vector<TrustedKeyText>& keys,
+                           std::vector<std::string>& problems) {
     CatalogueTrust trust;
-    trust.required = !files.empty();
-    for (const fs::path& file : files) {
-        Result<MinisignKey> key = read_public_key(file.string());
+    trust.required = required || !keys.empty();
+    for (const TrustedKeyText& text : keys) {
+        Result<MinisignKey> key = parse_public_key(text.text, text.source);
         if (key) {
             trust.keys.push_back(std::move(key).value());
         } else {

@@ -24,10 +24,18 @@ struct CatalogueTrust {
     std::vector<MinisignKey> keys;
 };
 
-// The public keys of config [catalogue] trusted_keys: required when any file is listed. A file
-// that cannot be read is left out and adds a message naming it to `problems`.
-CatalogueTrust load_trust(const std::vector<std::filesystem::path>& files,
-                          std::vector<std::string>& problems);
+// A trusted key as the config names it, with its file's bytes: read at start, or kept with the
+// last good config (kiosk/settings/last_good_config.hpp), so this library opens no key file.
+struct TrustedKeyText {
+    std::string source;  // the file's path, for messages
+    std::string text;
+};
+
+// The trust of config [catalogue] trusted_keys: `required` when the config asks for signatures
+// (it lists keys, or its list was unreadable). A key that does not parse is left out and adds a
+// message naming it to `problems`.
+CatalogueTrust parse_trust(bool required, const std::vector<TrustedKeyText>& keys,
+                           std::vector<std::string>& problems);
 
 // `manifest` (dir/catalogue.toml's bytes) against dir/catalogue.toml.minisig: the id of the key
 // that signed it, or why it is refused ("not signed: no catalogue.toml.minisig", ...).

@@ -215,6 +215,13 @@ std::optional<std::chrono::milliseconds> CatalogueWatcher::scan(std::stop_token 
 void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprint& fingerprint,
                                std::stop_token stop) {
     const std::string from = " (from " + source.string() + ")";
+    if (!options_.deliveries_refused_because.empty()) {
+        handled_[source] = {fingerprint.hash, Outcome::held};
+        log_error("catalogue at " + source.string() + " not installed: " +
+                  options_.deliveries_refused_because + "; it is left where it is");
+        ++rejections_;
+        return;
+    }
     handled_[source] = {fingerprint.hash, Outcome::rejected};
     ++validations_;
     Result<Catalogue> checked = validate_catalogue(source, options_.trust, stop);

@@ -16,6 +16,8 @@
 // fingerprint across restarts (state/refused-sources), so it is not validated again until it
 // changes. Sources already installed are remembered across restarts
 // (state/installed-sources), so a restart does not reinstall what is still in the inbox.
+// While deliveries are refused (the config is set aside), each delivery gets one line saying
+// so and stays where it is, neither set aside nor remembered.
 
 #include <atomic>
 #include <cstdint>
@@ -59,7 +61,8 @@ class CatalogueWatcher {
     Counters counters() const;
 
   private:
-    enum class Outcome { rejected, copy_failed, installed };
+    // held: not looked at, deliveries being refused (CatalogueOptions); said once.
+    enum class Outcome { rejected, copy_failed, installed, held };
     struct Seen {
         DirectoryFingerprint fingerprint;
         std::chrono::steady_clock::time_point since;  // when this fingerprint was first seen

@@ -3,7 +3,6 @@
 #include <sodium.h>
 
 #include <cstdio>
-#include <fstream>
 
 namespace gem::kiosk {
 
@@ -79,16 +78,6 @@ Result<MinisignKey> parse_public_key(std::string_view text, const std::string& s
     std::copy(raw.begin() + 10, raw.end(), key.public_key.begin());
     key.source = source;
     return key;
-}
-
-Result<MinisignKey> read_public_key(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{path + ": cannot read the key file"};
-    std::string text(kLargestFile + 1, '\0');
-    in.read(text.data(), static_cast<std::streamsize>(text.size()));
-    text.resize(static_cast<std::size_t>(in.gcount()));
-    if (text.size() > kLargestFile) return Error{path + ": too large for a minisign public key"};
-    return parse_public_key(text, path);
 }
 
 Result<MinisignSignature> parse_signature(std::string_view text) {

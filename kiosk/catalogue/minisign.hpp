@@ -42,8 +42,6 @@ std::string key_id_text(const std::array<std::uint8_t, 8>& id);
 
 // A public key file's text (its comment line is optional, so minisign's -P string also works).
 Result<MinisignKey> parse_public_key(std::string_view text, const std::string& source);
-// A public key file; errors name it.
-Result<MinisignKey> read_public_key(const std::string& path);
 
 Result<MinisignSignature> parse_signature(std::string_view text);
 

@@ -2,11 +2,7 @@
 // (option_sections.cpp, preset_sections.cpp).
 #include "settings/kiosk_config.hpp"
 
-#include <cerrno>
-#include <cstring>
-#include <fstream>
-#include <sstream>
-
+#include "import/import_text.hpp"
 #include "settings/config_sections.hpp"
 
 namespace gem::kiosk {
@@ -77,8 +73,8 @@ ConfigLoad parse_config(std::string_view text, std::string_view name,
         // One syntax error makes the rest of the file's meaning uncertain, so none of it is used.
         const toml::source_position at = e.source().begin;
         load.errors.push_back(std::string(name) + ":" + std::to_string(at.line) + ":" +
-                              std::to_string(at.column) + ": " + std::string(e.description()) +
-                              "; the whole file is ignored and the built-in defaults are used");
+                              std::to_string(at.column) + ": " + std::string(e.description()));
+        load.parsed = false;
         return load;
     }
     ConfigReader reader{std::string(name), base_dir};
@@ -88,21 +84,14 @@ ConfigLoad parse_config(std::string_view text, std::string_view name,
 }
 
 ConfigLoad load_config(const std::filesystem::path& file) {
-    std::ifstream in(file, std::ios::binary);
-    std::ostringstream text;
-    if (in) text << in.rdbuf();
-    if (!in || in.bad()) {
-        const int error = errno;
+    auto text = import::read_whole_file(file);
+    if (!text) {
         ConfigLoad load;
-        load.errors.push_back(file.string() + ": cannot read (" + std::strerror(error) +
-                              "); the built-in defaults are used");
+        load.errors.push_back(text.error());
+        load.parsed = false;
         return load;
     }
-    return parse_config(text.str(), file.string(), file.parent_path());
-}
-
-void log_config_errors(const ConfigLoad& load) {
-    for (const std::string& message : load.errors) log_error(message);
+    return parse_config(text.value(), file.string(), file.parent_path());
 }
 
 std::vector<std::string> known_config_keys() {

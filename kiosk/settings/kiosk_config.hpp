@@ -1,9 +1,10 @@
 #pragma once
 // The kiosk's one configuration file (config/gemkiosk.toml, installed as
-// /etc/gemkiosk/gemkiosk.toml), read with toml++. Every key has a default, so an empty or
-// missing file gives a working kiosk. A bad value or an unknown key is reported and that key
-// keeps its default; a file that is not valid TOML is reported once and the whole file is set
-// aside. Each error names the file, the line and the key:
+// /etc/gemkiosk/gemkiosk.toml), read with toml++. Every key has a default, so an empty file
+// gives a working kiosk. A bad value or an unknown key is reported and that key keeps its
+// default; a file that cannot be read or is not valid TOML is reported once and the whole file
+// is set aside (what stands instead: config_fallback.hpp). Each error names the file, the line
+// and the key:
 //   gemkiosk.toml:12: display.rotation: expected one of 0, 90, 180, 270
 
 #include <filesystem>
@@ -122,6 +123,9 @@ struct KioskConfig {
 struct ConfigLoad {
     KioskConfig config;
     std::vector<std::string> errors;  // in the order of the file's lines
+    // False when the file could not be read or is not TOML: `config` is then the defaults and
+    // `errors` holds the one line saying why ("gemkiosk.toml:143:10: ...").
+    bool parsed = true;
 };
 
 // Reads `file`; relative paths in it are taken relative to the file's folder.
@@ -129,8 +133,6 @@ ConfigLoad load_config(const std::filesystem::path& file);
 // The same from text: `name` is the file name errors carry, `base_dir` resolves relative paths.
 ConfigLoad parse_config(std::string_view text, std::string_view name,
                         const std::filesystem::path& base_dir);
-// Logs each error of `load` (log_error), so a kiosk's journal shows every bad line.
-void log_config_errors(const ConfigLoad& load);
 
 // Every key the loader reads, dotted from the top of the file ("display.rotation",
 // "lighting.light.colour"); the listing comes from the same tables the loader dispatches on.

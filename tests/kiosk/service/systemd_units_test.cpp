@@ -139,15 +139,28 @@ TEST_F(SystemdUnits, VerifyReportsAMissingProgram) {
 
 // Anything the kiosk's unit would run beside the kiosk (ExecReload=, ExecStartPost=, ...)
 // runs with its PAMName= session and its TTYPath= reset and hung up, under the running kiosk:
-// the VM test saw its page flips fail after `systemctl reload`. Only the kiosk is started.
-TEST_F(SystemdUnits, TheKioskUnitRunsNothingButTheKiosk) {
+// the VM test saw its page flips fail after `systemctl reload`. Only the kiosk is started, and
+// before it the config check, on the very file the kiosk reads and unable to stop the start
+// ("-": its failure is ignored, the kiosk falls back to the last good config).
+TEST_F(SystemdUnits, TheKioskUnitChecksItsConfigFirstAndRunsNothingBesideTheKiosk) {
     const std::string text = read_text(kUnitDir / "gemkiosk.service");
     std::istringstream lines(text);
+    std::string start, check;
     for (std::string line; std::getline(lines, line);) {
         if (line.rfind("Exec", 0) != 0) continue;
-        EXPECT_EQ(line.rfind("ExecStart=", 0), 0u) << line;
+        if (line.rfind("ExecStart=", 0) == 0) {
+            start = line;
+        } else if (line.rfind("ExecStartPre=", 0) == 0) {
+            EXPECT_EQ(check, "") << "one check only: " << line;
+            check = line;
+        } else {
+            ADD_FAILURE() << line;
+        }
     }
-    EXPECT_NE(text.find("\nExecStart="), std::string::npos);
+    const std::string flag = "--config ";
+    ASSERT_NE(start.find(flag), std::string::npos) << start;
+    const std::string config = start.substr(start.find(flag) + flag.size());
+    EXPECT_EQ(check, "ExecStartPre=-/usr/bin/gemkiosk --check-config " + config);
 }
 
 TEST_F(SystemdUnits, KioskExposureIsLow) {

@@ -70,7 +70,7 @@ TEST(CataloguePackage, InstallsTheSignedCatalogueWhereTheKioskWatches) {
     std::vector<std::string> problems;
     Result<Catalogue> shown = validate_catalogue(
         unpacked / "usr/share/gemkiosk/catalogues/gemkiosk-catalogue-spring-2027",
-        load_trust({pub}, problems));
+        parse_trust(true, {{pub.string(), read_text(pub)}}, problems));
     ASSERT_TRUE(shown.ok()) << shown.error();
     EXPECT_EQ(shown.value().name, "Spring 2027");
     EXPECT_FALSE(shown.value().signed_by.empty());

@@ -66,10 +66,10 @@ fs::path signed_catalogue(const std::string& name, const KeyPair& key,
 }
 
 CatalogueTrust trusting(const std::vector<KeyPair>& keys) {
-    std::vector<fs::path> files;
-    for (const KeyPair& k : keys) files.push_back(k.pub);
+    std::vector<TrustedKeyText> texts;
+    for (const KeyPair& k : keys) texts.push_back({k.pub.string(), read_text(k.pub)});
     std::vector<std::string> problems;
-    CatalogueTrust trust = load_trust(files, problems);
+    CatalogueTrust trust = parse_trust(true, texts, problems);
     EXPECT_TRUE(problems.empty());
     return trust;
 }
@@ -99,7 +99,7 @@ KeyPair* SignedCatalogue::chain_ = nullptr;
 KeyPair* SignedCatalogue::stranger_ = nullptr;
 
 TEST_F(SignedCatalogue, TheKeyIdIsTheOneMinisignPrints) {
-    Result<MinisignKey> key = read_public_key(chain_->pub.string());
+    Result<MinisignKey> key = parse_public_key(read_text(chain_->pub), chain_->pub.string());
     ASSERT_TRUE(key.ok()) << key.error();
     EXPECT_EQ(key_id_text(key.value().id), chain_->id);
 }
@@ -108,7 +108,7 @@ TEST_F(SignedCatalogue, TheKeyIdIsTheOneMinisignPrints) {
 // fail against the same bytes changed.
 TEST(MinisignFixture, StoredSignaturesVerify) {
     const fs::path dir = fs::path(GEM_FIXTURES_DIR) / "signature";
-    Result<MinisignKey> key = read_public_key((dir / "fixture.pub").string());
+    Result<MinisignKey> key = parse_public_key(read_text(dir / "fixture.pub"), "fixture.pub");
     ASSERT_TRUE(key.ok()) << key.error();
     EXPECT_EQ(key_id_text(key.value().id), "6210369F81C2ADCE");
     std::string manifest = read_text(dir / "manifest.toml");
@@ -235,11 +235,13 @@ TEST_F(SignedCatalogue, AChangedTrustedCommentIsRefused) {
 
 TEST_F(SignedCatalogue, WithoutAReadableKeyEveryDeliveryIsRefused) {
     const fs::path dir = signed_catalogue("nokey", *chain_);
+    // The config listed a key whose file could not be read (config_fallback_test.cpp), or one
+    // that is not a key.
     std::vector<std::string> problems;
-    const fs::path missing = fresh_dir("signature-nokey") / "chain.pub";
-    const CatalogueTrust trust = load_trust({missing}, problems);
+    const CatalogueTrust trust = parse_trust(true, {{"chain.pub", "not a key\n"}}, problems);
     ASSERT_EQ(problems.size(), 1u);
-    EXPECT_EQ(problems[0], missing.string() + ": cannot read the key file");
+    EXPECT_EQ(problems[0], "chain.pub: not a minisign public key (its key line must be 56 base64 "
+                           "characters)");
     EXPECT_TRUE(trust.required);
     EXPECT_EQ(verdict(dir, trust),
               "catalogue 'signed-nokey' rejected: catalogue.toml.minisig: signed by key " +

@@ -149,6 +149,40 @@ TEST(CatalogueWatcher, DamagedDatabasesAreRejectedAndTheCurrentStays) {
     EXPECT_EQ(w->counters().installs, 1u);
 }
 
+// While the kiosk's config is set aside, no delivery is installed, however good: each gets one
+// line saying why and stays where staff put it (not set aside, not remembered), so a kiosk
+// started on a fixed config installs it.
+TEST(CatalogueWatcher, WhileDeliveriesAreRefusedAGoodCatalogueStaysInTheInbox) {
+    const fs::path root = fresh_dir("watch-refused");
+    CatalogueOptions o = options_for(root, 300ms);
+    o.deliveries_refused_because = "the config is set aside (gemkiosk.toml:3:9: ...)";
+    StderrCapture capture;
+    {
+        auto w = start(o);
+        write_catalogue(o.inbox_dir / "spring", "spring");
+        ASSERT_TRUE(wait_until([&] { return w->counters().rejections == 1; }));
+        const auto scans = w->counters().scans;
+        w->rescan();
+        ASSERT_TRUE(wait_until([&] { return w->counters().scans > scans; }));
+        EXPECT_EQ(w->counters().validations, 0u) << "never opened";
+        EXPECT_EQ(w->counters().installs, 0u);
+        EXPECT_EQ(w->counters().rejections, 1u) << "said once, not at every scan";
+    }
+    const std::string line = "<3>gemkiosk: catalogue at " + (o.inbox_dir / "spring").string() +
+                             " not installed: " + o.deliveries_refused_because +
+                             "; it is left where it is\n";
+    EXPECT_NE(capture.text().find(line), std::string::npos) << capture.text();
+    EXPECT_EQ(entries(o.inbox_dir), std::vector<std::string>{"spring"});
+    EXPECT_FALSE(fs::exists(o.state_dir / "current"));
+    EXPECT_FALSE(fs::exists(o.state_dir / kRefusedSources));
+
+    // Started again on a good config: the same catalogue is installed.
+    o.deliveries_refused_because.clear();
+    auto w = start(o);
+    ASSERT_TRUE(switch_signalled(*w));
+    EXPECT_EQ(w->take_switch()->name, "spring");
+}
+
 // A catalogue on a stick cannot be set aside: it is refused once, remembered by fingerprint,
 // not validated again by a rescan nor after a restart, and looked at again once it changes.
 TEST(CatalogueWatcher, UnchangedRejectedDirectoryIsNotValidatedAgain) {
