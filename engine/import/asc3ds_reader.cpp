@@ -210,8 +210,12 @@ class Asc3dsParser {
 Result<Stone> load_3ds_ascii(const std::filesystem::path& path) {
     auto bytes = import::read_whole_file(path);
     if (!bytes) return Error{bytes.error()};
-    if (bytes.value().empty()) return import::file_error(path, "empty file");
-    return Asc3dsParser(path).parse(bytes.value());
+    return parse_3ds_ascii(bytes.value(), path);
+}
+
+Result<Stone> parse_3ds_ascii(std::string_view text, const std::filesystem::path& path) {
+    if (text.empty()) return import::file_error(path, "empty file");
+    return Asc3dsParser(path).parse(text);
 }
 
 }  // namespace gem

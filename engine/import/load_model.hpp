@@ -31,7 +31,11 @@ Result<Stone> load_obj(const std::filesystem::path& path);
 Result<Stone> load_stl(const std::filesystem::path& path);
 Result<Stone> load_3ds_ascii(const std::filesystem::path& path);
 Result<Stone> load_gemcad(const std::filesystem::path& path);  // material from its "I" line
-// The same from text already in memory; `path` names it in errors (the fuzz target's entry).
+// The same from bytes already in memory; `path` names them in errors (the fuzz targets'
+// entries).
+Result<Stone> parse_obj(std::string_view text, const std::filesystem::path& path);
+Result<Stone> parse_stl(std::string_view bytes, const std::filesystem::path& path);
+Result<Stone> parse_3ds_ascii(std::string_view text, const std::filesystem::path& path);
 Result<Stone> parse_gemcad(std::string_view text, const std::filesystem::path& path);
 
 }  // namespace gem

@@ -31,11 +31,15 @@ struct FaceCorner {
 Result<Stone> load_obj(const std::filesystem::path& path) {
     auto bytes = import::read_whole_file(path);
     if (!bytes) return Error{bytes.error()};
+    return parse_obj(bytes.value(), path);
+}
+
+Result<Stone> parse_obj(std::string_view text, const std::filesystem::path& path) {
     import::TriangleSoup soup;
     // Positive indices may refer to vertices written later, so they are checked at the end;
     // negative ones are relative to the vertices read so far and resolved at once.
     std::vector<std::vector<FaceCorner>> faces;
-    import::LineCursor cursor(bytes.value());
+    import::LineCursor cursor(text);
     std::string_view line;
     while (cursor.next(line)) {
         const std::size_t at = cursor.line_number();

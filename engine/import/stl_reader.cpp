@@ -28,19 +28,19 @@ float read_f32_le(const char* p) {
     return std::bit_cast<float>(read_u32_le(p));
 }
 
-bool binary_size_matches(const std::string& bytes) {
+bool binary_size_matches(std::string_view bytes) {
     if (bytes.size() < kHeaderBytes) return false;
     const std::uint64_t count = read_u32_le(bytes.data() + 80);
     return bytes.size() == kHeaderBytes + kTriangleBytes * count;
 }
 
-bool starts_with_solid(const std::string& bytes) {
+bool starts_with_solid(std::string_view bytes) {
     std::size_t i = 0;
     while (i < bytes.size() && std::isspace(static_cast<unsigned char>(bytes[i]))) ++i;
-    return import::istarts_with(std::string_view(bytes).substr(i), "solid");
+    return import::istarts_with(bytes.substr(i), "solid");
 }
 
-Result<Stone> read_binary(const std::filesystem::path& path, const std::string& bytes) {
+Result<Stone> read_binary(const std::filesystem::path& path, std::string_view bytes) {
     if (bytes.size() < kHeaderBytes) {
         return import::file_error(path, "truncated binary STL: " + std::to_string(bytes.size()) +
                                             " bytes, the header alone takes 84");
@@ -71,7 +71,7 @@ Result<Stone> read_binary(const std::filesystem::path& path, const std::string& 
 
 // solid name / facet normal ... / outer loop / vertex x y z (3 or more) / endloop / endfacet /
 // endsolid, possibly several solids, which are merged.
-Result<Stone> read_ascii(const std::filesystem::path& path, const std::string& text) {
+Result<Stone> read_ascii(const std::filesystem::path& path, std::string_view text) {
     enum class State { outside, in_solid, in_facet, in_loop };
     State state = State::outside;
     import::TriangleSoup soup;
@@ -148,11 +148,14 @@ Result<Stone> read_ascii(const std::filesystem::path& path, const std::string& t
 Result<Stone> load_stl(const std::filesystem::path& path) {
     auto bytes = import::read_whole_file(path);
     if (!bytes) return Error{bytes.error()};
-    const std::string& b = bytes.value();
+    return parse_stl(bytes.value(), path);
+}
+
+Result<Stone> parse_stl(std::string_view b, const std::filesystem::path& path) {
     if (b.empty()) return import::file_error(path, "empty file");
     // Text never holds NUL bytes, while a binary count or float almost always does.
     const bool binary =
-        binary_size_matches(b) || !starts_with_solid(b) || b.find('\0') != std::string::npos;
+        binary_size_matches(b) || !starts_with_solid(b) || b.find('\0') != std::string_view::npos;
     if (binary) return read_binary(path, b);
     return read_ascii(path, b);
 }

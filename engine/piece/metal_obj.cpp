@@ -12,11 +12,16 @@
 namespace gem {
 
 Result<MetalMesh> load_metal_obj(const std::filesystem::path& path, Metal metal, double roughness) {
+    auto bytes = import::read_whole_file(path);
+    if (!bytes) return Error{bytes.error()};
+    return parse_metal_obj(bytes.value(), path, metal, roughness);
+}
+
+Result<MetalMesh> parse_metal_obj(std::string_view text, const std::filesystem::path& path,
+                                  Metal metal, double roughness) {
     if (!(roughness >= 0.0 && roughness <= 1.0)) {
         return Error{path.string() + ": roughness must be 0..1"};
     }
-    auto bytes = import::read_whole_file(path);
-    if (!bytes) return Error{bytes.error()};
     std::vector<glm::dvec3> v;
     std::vector<glm::dvec3> vn;
     struct Corner {
@@ -24,7 +29,7 @@ Result<MetalMesh> load_metal_obj(const std::filesystem::path& path, Metal metal,
     };
     std::vector<std::array<Corner, 3>> triangles;
     std::vector<std::size_t> triangle_line;
-    import::LineCursor cursor(bytes.value());
+    import::LineCursor cursor(text);
     std::string_view line;
     auto resolve = [](long long index, std::size_t count) -> long long {
         // 1-based, or negative: relative to the elements read so far.

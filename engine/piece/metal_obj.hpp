@@ -5,6 +5,7 @@
 // vertex. Errors name the file and the line.
 
 #include <filesystem>
+#include <string_view>
 
 #include "piece/metal.hpp"
 #include "piece/metal_mesh.hpp"
@@ -13,5 +14,8 @@
 namespace gem {
 
 Result<MetalMesh> load_metal_obj(const std::filesystem::path& path, Metal metal, double roughness);
+// The same from text in memory; `path` names it in errors (the fuzz target's entry).
+Result<MetalMesh> parse_metal_obj(std::string_view text, const std::filesystem::path& path,
+                                  Metal metal, double roughness);
 
 }  // namespace gem

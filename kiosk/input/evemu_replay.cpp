@@ -2,14 +2,17 @@
 
 #include <evemu.h>
 
+#include <algorithm>
 #include <cerrno>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <limits>
 #include <memory>
+#include <string_view>
 
 namespace gem::kiosk {
 
@@ -49,12 +52,29 @@ std::string find_description_beside(const std::filesystem::path& events_path) {
     }
 }
 
+// Whether libevemu's reader would find a first line: it skips lines of at most one character
+// (strlen, so up to a NUL) and, when there is none, returns without freeing its line buffer
+// (evemu_read in libevemu 2.7, "This appears to be an empty file"; found by fuzz_config).
+bool has_a_first_line(std::string_view text) {
+    if (text.find('\0') != std::string_view::npos) return false;  // a description is text
+    for (std::size_t start = 0; start < text.size();) {
+        const std::size_t end = std::min(text.find('\n', start), text.size());
+        const std::size_t with_newline = end - start + (end < text.size() ? 1 : 0);
+        if (with_newline > 1) return true;
+        start = end + 1;
+    }
+    return false;
+}
+
 Result<EvemuDevice> read_description(const std::string& path) {
-    File file(std::fopen(path.c_str(), "r"));
-    if (!file) return Error{"evemu description " + path + ": " + std::strerror(errno)};
+    std::ifstream in(path, std::ios::binary);
+    if (!in) return Error{"evemu description " + path + ": " + std::strerror(errno)};
+    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    const std::string invalid = "evemu description " + path + ": not a valid evemu device description";
+    if (!has_a_first_line(text)) return Error{invalid};
+    File file(fmemopen(text.data(), text.size(), "r"));
     EvemuDevice device(evemu_new(nullptr));
-    if (!device || evemu_read(device.get(), file.get()) <= 0)
-        return Error{"evemu description " + path + ": not a valid evemu device description"};
+    if (!file || !device || evemu_read(device.get(), file.get()) <= 0) return Error{invalid};
     return device;
 }
 

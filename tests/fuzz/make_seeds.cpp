@@ -4,6 +4,7 @@
 // the fuzzer starts from inputs that reach every stage of the reader. Given a second folder, it
 // writes the glTF reader's seeds there: the octahedron as a named stone on a metal plate (a
 // piece the reader accepts), with a transmissive material and without, and damaged copies.
+// Given a third, the model readers' seeds (model_seeds.hpp).
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -17,6 +18,7 @@
 #include "../support/cad_corpus.hpp"
 #include "../support/draco_mesh.hpp"
 #include "../support/glb_writer.hpp"
+#include "model_seeds.hpp"
 #include "optics/material.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
@@ -189,11 +191,16 @@ void write_gltf_seeds(const std::filesystem::path& dir) {
 }  // namespace
 
 int main(int argc, char** argv) {
-    if (argc != 2 && argc != 3) {
-        std::fprintf(stderr, "usage: gem_fuzz_seeds DIR [GLTF_DIR]\n");
+    if (argc < 2 || argc > 4) {
+        std::fprintf(stderr, "usage: gem_fuzz_seeds DIR [GLTF_DIR [MODEL_DIR]]\n");
         return 2;
     }
-    if (argc == 3) write_gltf_seeds(argv[2]);
+    if (argc >= 3) write_gltf_seeds(argv[2]);
+    if (argc == 4) {
+        const int models = gem::fuzz::write_model_seeds(argv[3]);
+        if (models < 0) return 1;
+        std::printf("gem_fuzz_seeds: wrote %d model seeds to %s\n", models, argv[3]);
+    }
     const std::filesystem::path dir = argv[1];
     std::filesystem::create_directories(dir);
     if (!write_valid(dir / "valid.gemdb", false)) return 1;

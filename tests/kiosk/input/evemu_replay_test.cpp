@@ -345,5 +345,21 @@ TEST(EvemuReplay, ErrorsNameTheFileAndLine) {
     EXPECT_NE(lonely.error().find("description"), std::string::npos);
 }
 
+// A description with no line libevemu would read (empty, blank lines, one character, a NUL) is
+// refused before libevemu sees it: its reader returns from that case without freeing its line
+// buffer, which the sanitizer pass reports as a leak (found by fuzz_config).
+TEST(EvemuReplay, AnEmptyDescriptionIsRefusedWithoutLeaking) {
+    const std::string events = write_file("one.events", "E: 0.000001 0000 0000 0000\n");
+    int n = 0;
+    for (const std::string& text : {std::string(""), std::string("\n\n\n"), std::string("x"),
+                                   std::string("\0N: x\n", 7)}) {
+        const std::string desc = write_file("empty-" + std::to_string(n++) + ".desc", text);
+        const Result<EvemuReplay> opened = EvemuReplay::open(options_for(events, desc));
+        ASSERT_FALSE(opened.ok());
+        EXPECT_EQ(opened.error(),
+                  "evemu description " + desc + ": not a valid evemu device description");
+    }
+}
+
 }  // namespace
 }  // namespace gem::kiosk

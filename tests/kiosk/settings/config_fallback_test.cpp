@@ -90,6 +90,31 @@ TEST(LastGoodConfig, NoneKeptOrDamagedIsAnErrorNamingTheFile) {
     EXPECT_NE(missing.error().find("'config' is missing"), std::string::npos) << missing.error();
 }
 
+// The format as the header documents it, written by hand (tests/fixtures/config), read back
+// as the shop's settings and key; a config set aside falls back to it.
+TEST(LastGoodConfig, AHandWrittenCopyIsReadAndStandsInForABrokenFile) {
+    const fs::path dir = fresh_dir("last-good-fixture");
+    fs::create_directories(dir / "state");
+    fs::copy_file(fs::path(GEM_FIXTURES_DIR) / "config" / kLastGoodConfigName,
+                  dir / "state" / kLastGoodConfigName);
+    write(dir / "gemkiosk.toml", "[display]\nrotation = 90 degrees\n");
+    const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
+    EXPECT_EQ(resolved.config.display.connector, "HDMI-A-2");
+    EXPECT_EQ(resolved.config.display.rotation_deg, 270);
+    EXPECT_DOUBLE_EQ(resolved.config.input.calibration[0], 1.02);
+    EXPECT_DOUBLE_EQ(resolved.config.input.calibration[5], 0.02);
+    // The kept config's relative key path resolves beside where it was read.
+    ASSERT_EQ(resolved.config.catalogue.trusted_keys.size(), 1u);
+    EXPECT_EQ(resolved.config.catalogue.trusted_keys[0], fs::path("/etc/gemkiosk/chain.pub"));
+    ASSERT_EQ(resolved.trusted_keys.size(), 1u);
+    EXPECT_EQ(resolved.trusted_keys[0].file, fs::path("/etc/gemkiosk/chain.pub"));
+    EXPECT_EQ(resolved.trusted_keys[0].text.rfind("untrusted comment: minisign public key "
+                                                  "6210369F81C2ADCE\nRWTOrcKB",
+                                                  0),
+              0u);
+    EXPECT_TRUE(resolved.signatures_required);
+}
+
 TEST(ConfigFallback, AGoodConfigIsUsedAndOfferedForKeeping) {
     const fs::path dir = fresh_dir("fallback-good");
     write(dir / "gemkiosk.toml", kShopConfig);
