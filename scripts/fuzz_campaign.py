@@ -42,7 +42,9 @@ def run(name, command, seconds):
     before = artifacts(prefix)
     started = time.monotonic()
     # -print_final_stats=1: libFuzzer's own count of the inputs it ran.
-    done = subprocess.run(command + ["-print_final_stats=1"], capture_output=True, text=True)
+    # errors="replace": a reader may echo the fuzzer's bytes to stderr (libevemu does).
+    done = subprocess.run(command + ["-print_final_stats=1"], capture_output=True, text=True,
+                          errors="replace")
     took = time.monotonic() - started
     log = done.stderr
     runs = re.findall(r"stat::number_of_executed_units:\s*(\d+)", log)

@@ -101,13 +101,14 @@ DeviceCapabilities capabilities_of(const evemu_device* d) {
 }
 
 // One "E:" line through libevemu's own parser. A line libevemu would refuse is refused here
-// first: libevemu 2.7 leaks its line buffer on that path and prints to stderr.
+// first, by its own format with its field widths (evemu_read_event in libevemu 2.7): it leaks
+// its line buffer on that path and prints to stderr (a five-digit code, found by fuzz_config).
 bool parse_event_line(std::string line, input_event& event) {
     unsigned long seconds = 0;
     unsigned int microseconds = 0, type = 0, code = 0;
-    int value = 0, consumed = 0;
-    if (std::sscanf(line.c_str(), "E: %lu.%u %x %x %d%n", &seconds, &microseconds, &type, &code,
-                    &value, &consumed) != 5)
+    int value = 0;
+    if (std::sscanf(line.c_str(), "E: %lu.%06u %04x %04x %d\n", &seconds, &microseconds, &type,
+                    &code, &value) != 5)
         return false;
     line.push_back('\n');
     File file(fmemopen(line.data(), line.size(), "r"));

@@ -449,6 +449,20 @@ def legacy(guest, figures, expected, others):
     no_warnings(guest, since, "a restart on the legacy modesetting path")
 
 
+def config_checked_before_start(guest):
+    """The unit ran `gemkiosk --check-config` on the kiosk's config (ExecStartPre=) before the
+    kiosk itself: its verdict comes before the kiosk's first frame in the journal."""
+    lines = guest.shell.run("journalctl -b -t gemkiosk -o cat --no-pager",
+                            check=False).splitlines()
+    verdict = "/etc/gemkiosk/gemkiosk.toml: no problems"
+    checked = [i for i, line in enumerate(lines) if line == verdict]
+    started = [i for i, line in enumerate(lines) if "first frame on screen" in line]
+    if not checked or not started or checked[0] > started[0]:
+        raise CheckFailed(f"no '{verdict}' before the kiosk's first frame:\n" +
+                          "\n".join(lines[:30]))
+    log("the config was checked before the kiosk started: " + verdict)
+
+
 def scenario(args, host, guest, catalogues, figures, choice):
     first_catalogue = os.path.join(catalogues, "first")
     diamond_catalogue = os.path.join(catalogues, "diamond")
@@ -463,6 +477,7 @@ def scenario(args, host, guest, catalogues, figures, choice):
     figures["start_to_first_frame_s"] = (int(active_us) - int(start_us)) / 1e6
     log(f"first frame {figures['boot_to_first_frame_s']:.1f} s after the guest's kernel started "
         f"({figures['start_to_first_frame_s']:.1f} s after the kiosk did)")
+    config_checked_before_start(guest)
     line = guest.wait_for_log(r"display: DRM .* lit", timeout_s=10)
     log("the kiosk says: " + line)
     # virtio-gpu does atomic modesetting: the default takes it (the legacy path comes later).

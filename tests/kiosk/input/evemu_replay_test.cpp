@@ -345,6 +345,18 @@ TEST(EvemuReplay, ErrorsNameTheFileAndLine) {
     EXPECT_NE(lonely.error().find("description"), std::string::npos);
 }
 
+// An event line whose fields are wider than libevemu's format reads (a five-digit code) is
+// refused by the kiosk, naming its line, before libevemu's reader, which leaks on it.
+TEST(EvemuReplay, AnEventLineWiderThanLibevemuReadsIsRefusedWithItsLine) {
+    const std::string wide = write_file(
+        "wide.events", "E: 0.000001 0003 0035 0100\nE: 0.075000 0000 0000A 0\n");
+    const Result<EvemuReplay> opened =
+        EvemuReplay::open(options_for(wide, data_dir + "N-Trig_MultiTouch.desc"));
+    ASSERT_FALSE(opened.ok());
+    EXPECT_EQ(opened.error(), "evemu recording " + wide +
+                                  ":2: damaged event line \"E: 0.075000 0000 0000A 0\"");
+}
+
 // A description with no line libevemu would read (empty, blank lines, one character, a NUL) is
 // refused before libevemu sees it: its reader returns from that case without freeing its line
 // buffer, which the sanitizer pass reports as a leak (found by fuzz_config).
