@@ -5,6 +5,7 @@
 #include <limits>
 
 #include "optics/fresnel.hpp"
+#include "optics/microfacet.hpp"
 #include "render/camera.hpp"
 #include "render/lights.hpp"
 
@@ -12,7 +13,6 @@ namespace gem {
 
 namespace {
 
-constexpr double kPi = 3.14159265358979323846;
 // How far a ray that leaves a surface starts off it, so it does not meet that surface again.
 constexpr double kOffsetMm = 1e-7;
 
@@ -23,12 +23,6 @@ double uniform(std::uint64_t& state) {
     z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
     z ^= z >> 31;
     return static_cast<double>(z >> 11) * (1.0 / 9007199254740992.0);
-}
-
-// Smith's masking for GGX (Walter et al. 2007, eq. 34) of direction x about normal n.
-double smith_g1(double n_dot_x, double alpha) {
-    const double a2 = alpha * alpha;
-    return 2.0 * n_dot_x / (n_dot_x + std::sqrt(a2 + (1.0 - a2) * n_dot_x * n_dot_x));
 }
 
 }  // namespace
@@ -204,29 +198,14 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     n = glm::normalize(n);
     const glm::dvec3 v = -ray.direction;
     if (glm::dot(n, v) <= 1e-6) n = face;  // a shading normal facing away: the face's own
-    const double n_dot_v = std::max(glm::dot(n, v), 1e-6);
 
-    // A microfacet normal from GGX's distribution (Walter et al. 2007, eq. 35-36).
-    const double r = piece_.metal.roughness;
-    const double alpha = std::max(r * r, 1e-4);
+    // A microfacet normal from GGX's distribution, weighted as drawn (optics/microfacet.hpp).
+    const double alpha = ggx_alpha(piece_.metal.roughness);
     const double u1 = uniform(scratch.random), u2 = uniform(scratch.random);
-    const double tan2 = alpha * alpha * u1 / std::max(1.0 - u1, 1e-12);
-    const double cos_t = 1.0 / std::sqrt(1.0 + tan2), sin_t = std::sqrt(1.0 - cos_t * cos_t);
-    const glm::dvec3 tx =
-        glm::normalize(std::abs(n.x) < 0.9 ? glm::cross(n, {1, 0, 0}) : glm::cross(n, {0, 1, 0}));
-    const glm::dvec3 ty = glm::cross(n, tx);
-    const double phi = 2.0 * kPi * u2;
-    const glm::dvec3 m = sin_t * std::cos(phi) * tx + sin_t * std::sin(phi) * ty + cos_t * n;
-    const double v_dot_m = glm::dot(v, m);
-    if (v_dot_m <= 0.0) return glm::dvec3(0.0);
-    const glm::dvec3 l = 2.0 * v_dot_m * m - v;
-    const double n_dot_l = glm::dot(n, l);
-    if (n_dot_l <= 0.0) return glm::dvec3(0.0);
-    // Weight of the sample: F G |v·m| / (|n·v| |n·m|) (eq. 38 for reflection).
-    const glm::dvec3 f0(piece_.metal.f0);
-    const glm::dvec3 fresnel = f0 + (1.0 - f0) * std::pow(1.0 - v_dot_m, 5.0);
-    const double g = smith_g1(n_dot_v, alpha) * smith_g1(n_dot_l, alpha);
-    const glm::dvec3 weight = fresnel * (g * v_dot_m / (n_dot_v * cos_t));
+    const glm::dvec3 m = sample_ggx_normal(n, alpha, u1, u2);
+    const glm::dvec3 weight = ggx_sample_weight(glm::dvec3(piece_.metal.f0), n, v, m, alpha);
+    if (weight == glm::dvec3(0.0)) return glm::dvec3(0.0);
+    const glm::dvec3 l = 2.0 * glm::dot(v, m) * m - v;
     return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), 1.0, weight, iors,
                   pass - 1, share, scratch);
 }

@@ -1,7 +1,8 @@
 // The exact reference of a whole piece against what can be known without it: a piece of one
 // stone and no metal must draw exactly what the loose stone's reference draws (a second,
 // independent renderer of the same rays), and a mirror of metal under a uniform sky must show
-// the metal's F0, the Fresnel reflectance at normal incidence. Two stones that see only the
+// the metal's F0, the Fresnel reflectance at normal incidence, and a rough one the reflectance
+// of the white furnace. Two stones that see only the
 // metal (PieceSight::metal_only) each draw what they draw alone, and differ where they see each
 // other (PieceSight::everything).
 
@@ -10,6 +11,7 @@
 #include <cmath>
 
 #include "optics/material.hpp"
+#include "optics/microfacet.hpp"
 #include "piece/metal.hpp"
 #include "render/reference_render.hpp"
 #include "trace_cut_stones.hpp"
@@ -74,6 +76,36 @@ TEST(PieceReference, AMirrorOfMetalUnderAUniformSkyShowsItsF0) {
     const glm::vec3 f0 = metal_f0(Metal::platinum);
     EXPECT_FLOAT_EQ(centre.w, 1.0f);
     for (int c = 0; c < 3; ++c) EXPECT_NEAR(centre[c], f0[c], 1e-3) << c;
+}
+
+// The same plate, rough (roughness 0.25, the pieces' default), in the white furnace's uniform
+// sky: on average it reflects F0·scale + bias of the environment BRDF, which the microfacet
+// test holds to quadrature. 16 × 16 pixels of 16 samples each are averaged against the noise.
+TEST(PieceReference, ARoughPlateUnderAUniformSkyReflectsItsEnvironmentBrdf) {
+    Piece piece;
+    piece.name = "plate";
+    piece.metal.f0 = metal_f0(Metal::yellow_gold);
+    piece.metal.roughness = 0.25f;
+    const float h = 5.0f;
+    piece.metal.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+    piece.metal.normals.assign(4, glm::vec3(0, 1, 0));
+    piece.metal.indices = {0, 2, 1, 0, 3, 2};
+    RenderSettings s = small_picture();
+    s.camera.elevation_deg = 90.0;
+    s.camera.zoom = 2.0;
+    s.samples_per_pixel = 16;
+    s.shading.lights.clear();
+    auto image = render_piece_reference(piece, Environment::uniform(glm::dvec3(1.0)), s);
+    ASSERT_TRUE(image);
+    glm::dvec3 mean(0.0);
+    for (int y = s.height / 2 - 8; y < s.height / 2 + 8; ++y) {
+        for (int x = s.width / 2 - 8; x < s.width / 2 + 8; ++x) {
+            mean += glm::dvec3(image.value().at(x, y)) / 256.0;
+        }
+    }
+    const EnvironmentBrdf e = environment_brdf(1.0, 0.25);
+    const glm::vec3 f0 = metal_f0(Metal::yellow_gold);
+    for (int c = 0; c < 3; ++c) EXPECT_NEAR(mean[c], f0[c] * e.scale + e.bias, 3e-3) << c;
 }
 
 // Two diamonds side by side, 0.6 mm apart, each drawn in a piece of its own and both in one.
