@@ -124,7 +124,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
     const MetalMesh* metal = s.piece != nullptr ? &s.piece->metal : s.ring;
     if (metal != nullptr && !metal->indices.empty()) {
-        auto ring = RingRenderer::make(*metal);
+        auto ring = RingRenderer::make(*metal, *r.environment_cube_);
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
@@ -235,7 +235,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     if (!depth) return Error{depth.error()};
     passed(stats.stone_depth_ms);
     if (ring_) {
-        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, *environment_cube_);
+        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading);
         if (!ok) return Error{ok.error()};
         passed(stats.metal_ms);
     }

@@ -44,6 +44,8 @@ std::vector<ProgramSpec> all_program_specs() {
          kLightCountBits | kSpecularPowerBits},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring", {"ring.vert"}, {"ring.frag"}, {}, kLightCountBits},
+        // The environment filtered by the metal's lobe (metal_environment.hpp).
+        {"metal_filter", {"fullscreen.vert"}, {"metal_filter.frag"}, {}},
         // The picture from HDR radiance to the display: glare pyramid, tone curve
         // (hdr_picture.hpp, bloom_pass.hpp).
         {"bloom_down", {"fullscreen.vert"}, {"bloom_down.frag"}, {}},

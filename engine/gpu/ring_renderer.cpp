@@ -36,10 +36,13 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm) {
     return glm::mat4(m);
 }
 
-RingRenderer::RingRenderer(ProgramVariants ring, Program background)
-    : ring_(std::move(ring)), background_(std::move(background)) {}
+RingRenderer::RingRenderer(ProgramVariants ring, Program background,
+                           MetalEnvironment environment)
+    : ring_(std::move(ring)),
+      background_(std::move(background)),
+      environment_(std::move(environment)) {}
 
-Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
+Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const EnvironmentCube& environment) {
     if (mesh.positions.size() != mesh.normals.size() || mesh.indices.size() % 3 != 0) {
         return Error{"ring renderer: the mesh has " + std::to_string(mesh.positions.size()) +
                      " positions, " + std::to_string(mesh.normals.size()) + " normals and " +
@@ -57,7 +60,10 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
     if (!built) return Error{built.error()};
     auto background = build_program("background");
     if (!background) return Error{background.error()};
-    RingRenderer r(std::move(ring), std::move(background).value());
+    auto metal_environment = MetalEnvironment::make(environment, mesh.roughness);
+    if (!metal_environment) return Error{"ring renderer: " + metal_environment.error()};
+    RingRenderer r(std::move(ring), std::move(background).value(),
+                   std::move(metal_environment).value());
     r.f0_ = mesh.f0;
     r.roughness_ = mesh.roughness;
     r.radius_mm_ = mesh.radius_mm();
@@ -86,7 +92,7 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh) {
 
 void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
                              bool eye_at_infinity, const ShadingSettings& lights,
-                             const EnvironmentCube& environment, bool cull_back) const {
+                             bool cull_back) const {
     const Program& ring = *ring_.find(light_count_feature(lights.lights));
     ring.use();
     ring.set("u_view_projection", view_projection);
@@ -94,10 +100,14 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
     ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
     ring.set("u_f0", f0_);
     ring.set("u_roughness", roughness_);
+    ring.set("u_h", static_cast<float>(lights.h));
     glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.filtered().texture());
     ring.set("u_environment", 0);
-    ring.set("u_environment_face", static_cast<float>(environment.face_size()));
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, environment_.brdf_table());
+    ring.set("u_environment_brdf", 1);
+    glActiveTexture(GL_TEXTURE0);
     set_light_uniforms(ring, lights.lights);
     glDisable(GL_BLEND);
     if (cull_back) {
@@ -116,8 +126,7 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
 }
 
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
-                                const ShadingSettings& lights_from,
-                                const EnvironmentCube& environment) const {
+                                const ShadingSettings& lights_from) const {
     if (index_count_ == 0) return true;
     // Orthographic: every pixel looks along forward, so the eye is a direction (toward it).
     const bool at_infinity = camera.orthographic();
@@ -126,8 +135,7 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
     // Closed solids wound counter-clockwise from outside: their back faces lie behind their
     // front ones, and shading them first only to be overdrawn cost a third of a halo ring's
     // metal pass on llvmpipe (bench_pieces).
-    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, environment,
-              closed_);
+    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, closed_);
     return gl_check("ring pass");
 }
 
@@ -184,7 +192,7 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
             draw_mesh(cube_face_projection(face, near_mm, far_mm), glm::vec3(0.0f), false,
-                      lights_from, background, false);
+                      lights_from, false);
         }
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);

@@ -1,12 +1,14 @@
 #pragma once
-// Draws the ring with physically based metal shading (Cook-Torrance: GGX distribution, Smith
-// masking, Schlick Fresnel from the metal's F0), lit by up to kMaxLights lights and by the
-// environment cube along the reflected direction; and renders the scene around the stone
+// Draws the ring with physically based metal shading, the CPU reference's model (GGX
+// distribution, separable Smith masking, Schlick Fresnel from the metal's F0), lit by up to
+// kMaxLights lights and by the environment filtered for its roughness (metal_environment.hpp);
+// and renders the scene around the stone
 // (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
 // from the stone's centre (docs/design.md, "Jewellery").
 
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_handles.hpp"
+#include "gpu/metal_environment.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
 #include "gpu/ring_mesh.hpp"
@@ -26,13 +28,14 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm);
 class RingRenderer {
   public:
     // An empty mesh is allowed: a loose stone, where only the environment is drawn into cubes.
-    static Result<RingRenderer> make(const MetalMesh& mesh);
+    // The metal reflects `environment`, which must outlive the renderer.
+    static Result<RingRenderer> make(const MetalMesh& mesh, const EnvironmentCube& environment);
 
     // Draws the ring into the bound framebuffer with depth test and depth write (the stone
     // layer has written its depth already), opaque. Uses view_projection(camera,
     // scene_radius_mm), so the ring must lie inside that sphere.
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
-                      const ShadingSettings& lights_from, const EnvironmentCube& environment) const;
+                      const ShadingSettings& lights_from) const;
 
     // Renders background (the environment) + ring into `target`'s six faces as seen from the
     // stone centre (perspective 90° per face). `target` must be another cube than
@@ -41,13 +44,13 @@ class RingRenderer {
                                          const ShadingSettings& lights_from) const;
 
   private:
-    RingRenderer(ProgramVariants ring, Program background);
+    RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment);
     void draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye, bool eye_at_infinity,
-                   const ShadingSettings& lights, const EnvironmentCube& environment,
-                   bool cull_back) const;
+                   const ShadingSettings& lights, bool cull_back) const;
 
     ProgramVariants ring_;  // one per light count, all built by make()
     Program background_;
+    MetalEnvironment environment_;
     VertexArray vertex_array_;
     Buffer positions_;
     Buffer normals_;

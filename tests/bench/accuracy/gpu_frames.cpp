@@ -78,7 +78,7 @@ Result<std::vector<float>> ring_coverage(const Scene& scene, const Environment& 
     if (!cube) return Error{cube.error()};
     auto trace = gpu::TraceMethod::make(scene.stone);
     if (!trace) return Error{trace.error()};
-    auto ring = gpu::RingRenderer::make(*scene.ring);
+    auto ring = gpu::RingRenderer::make(*scene.ring, cube.value());
     if (!ring) return Error{ring.error()};
     auto target = gpu::RenderTarget::make(image, image);
     if (!target) return Error{target.error()};
@@ -97,7 +97,7 @@ Result<std::vector<float>> ring_coverage(const Scene& scene, const Environment& 
     auto drawn = trace.value().draw(frame, TraceSettings{});
     if (!drawn) return Error{drawn.error()};
     glClear(GL_COLOR_BUFFER_BIT);
-    drawn = ring.value().draw(camera.value(), scene_radius, scene_lights(), cube.value());
+    drawn = ring.value().draw(camera.value(), scene_radius, scene_lights());
     if (!drawn) return Error{drawn.error()};
     auto ok = gpu::gl_check("ring coverage");
     if (!ok) return Error{ok.error()};
