@@ -549,6 +549,18 @@ TEST(GpuRing, DISABLED_Timing) {
         std::printf("cube update, 6 faces of %d²: %.2f ms\n", size,
                     ms(clock::now() - start) / frames);
     }
+    // The metal's environment, made once a frame renderer: its filter program built and run.
+    for (const double roughness : {0.1, 0.25, 0.5}) {
+        start = clock::now();
+        for (int i = 0; i < 3; ++i) {
+            auto filtered = gpu::MetalEnvironment::make(studio.value(), roughness);
+            ASSERT_TRUE(filtered.ok()) << filtered.error();
+        }
+        glFinish();
+        std::printf("metal environment at roughness %.2f (%d² faces): %.2f ms\n", roughness,
+                    gpu::metal_environment_face(roughness, studio.value().face_size()),
+                    ms(clock::now() - start) / 3);
+    }
     auto clean = gpu::gl_check("timing");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }
