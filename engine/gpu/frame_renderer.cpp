@@ -10,7 +10,9 @@
 #include "gpu/piece_tables.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "gpu/ring_renderer.hpp"
+#include "piece/sight_groups.hpp"
 #include "util/elapsed.hpp"
+
 
 namespace gem::gpu {
 
@@ -42,8 +44,9 @@ Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
     frame.placement = {};
     frame.stone = &kind(k);
     frame.camera = camera;
-    frame.environment = ring_cube_ ? ring_cube_.get() : environment_cube_.get();
-    frame.cube_half_mm = cube_half_mm_;
+    set_sight(frame, first_of_kind(k));
+    // Drawn at the centre: its cube is looked up from where the stone sits in the piece.
+    frame.cube_centre_mm -= frames_[first_of_kind(k)].placement.position;
     frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
     glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
@@ -129,14 +132,30 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
-        // The ring sits about as far from the stone as its own radius: that is where the
-        // virtual cube's faces stand, so rays leaving off-centre see it with parallax.
-        // Never nearer than the stones reach: an exit point outside the cube would look its
-        // rays up from the cube's centre through that point (shading.glsl, environment()).
-        r.cube_half_mm_ = std::max(metal->radius_mm(), s.piece ? s.piece->radius_mm() : 0.0);
-        auto ring_cube = EnvironmentCube::allocate(s.cube_face);
-        if (!ring_cube) return Error{ring_cube.error()};
-        r.ring_cube_ = std::make_unique<EnvironmentCube>(std::move(ring_cube).value());
+        // Each group of stones sees the metal from its own centre (piece/sight_groups.hpp), a
+        // loose stone from its own. A loose stone's cube faces stand about as far as the ring's
+        // radius, so rays leaving off-centre see it with parallax. A piece's groups look their
+        // cubes up by direction alone (a cube at infinity): against the exact reference, a
+        // parallax box of 8, 16, 32 and 100 times a group's reach gave the halo 7.8, 7.0, 6.6
+        // and 6.5 ΔE00 and at infinity 6.4; the solitaire 6.9, -, 5.1, 4.7 and 4.7
+        // (scripts/piece_accuracy.sh, 2026-12-05).
+        std::vector<SightGroup> groups;
+        if (s.piece != nullptr) groups = sight_groups(*s.piece);
+        if (groups.empty()) groups.push_back({glm::dvec3(0.0), metal->radius_mm(), true, {0}});
+        r.sight_of_.assign(r.frames_.size(), 0);
+        for (std::size_t g = 0; g < groups.size(); ++g) {
+            const SightGroup& group = groups[g];
+            // Small stones' cubes at a quarter of the face: half measured the same, at twice
+            // the cost (docs/pieces.md).
+            const int face = group.own ? s.cube_face : std::max(64, s.cube_face / 4);
+            auto sight_cube = EnvironmentCube::allocate(face);
+            if (!sight_cube) return Error{sight_cube.error()};
+            const double half = s.piece != nullptr ? 0.0 : metal->radius_mm();
+            r.sight_cubes_.push_back(
+                {std::make_unique<EnvironmentCube>(std::move(sight_cube).value()), group.centre,
+                 half});
+            for (const std::size_t i : group.stones) r.sight_of_[i] = g;
+        }
         auto updated = r.update_ring_cube();
         if (!updated) return Error{updated.error()};
     }
@@ -146,7 +165,25 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
 Result<bool> FrameRenderer::update_ring_cube() {
     if (!ring_) return true;
     // The ring renderer restores the caller's framebuffer and viewport itself.
-    return ring_->render_environment_cube(*environment_cube_, *ring_cube_, setup_.shading);
+    for (SightCube& sight : sight_cubes_) {
+        auto ok = ring_->render_environment_cube(*environment_cube_, *sight.cube, setup_.shading,
+                                                 sight.centre);
+        if (!ok) return ok;
+    }
+    return true;
+}
+
+void FrameRenderer::set_sight(StoneFrame& frame, std::size_t i) const {
+    if (sight_cubes_.empty()) {
+        frame.environment = environment_cube_.get();
+        frame.cube_half_mm = 0.0;
+        frame.cube_centre_mm = glm::dvec3(0.0);
+        return;
+    }
+    const SightCube& sight = sight_cubes_[sight_of_[i]];
+    frame.environment = sight.cube.get();
+    frame.cube_half_mm = sight.half_mm;
+    frame.cube_centre_mm = sight.centre;
 }
 
 Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {
@@ -211,7 +248,6 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         pass_start = Clock::now();
     };
 
-    const EnvironmentCube& seen = ring_cube_ ? *ring_cube_ : *environment_cube_;
     if (setup_.piece != nullptr && !camera.orthographic()) {
         return Error{
             "frame renderer: a piece is drawn with an orthographic camera (a "
@@ -222,8 +258,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         // Filled in here: the stone lives in this renderer (or its piece), which may have moved.
         frame.stone = &kind(kinds_[i]);
         frame.camera = camera;
-        frame.environment = &seen;
-        frame.cube_half_mm = cube_half_mm_;
+        set_sight(frame, i);
         frame.scene_radius_mm = scene_radius_mm_;
         frame.still = still;
     }

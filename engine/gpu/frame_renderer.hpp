@@ -3,9 +3,10 @@
 // from the registry, stone_method.hpp: a loose stone, or every stone of a piece), ring or the
 // piece's metal, composited with alpha and depth into the bound framebuffer (docs/design.md,
 // "Data flow").
-// gemrender and the kiosk both draw through it. With metal, the virtual cube shows it around
-// the stones: its six faces are rendered from the centre (the loose stone's, the piece's) when
-// the scene changes (make() and set_lights()), not every frame.
+// gemrender and the kiosk both draw through it. With metal, virtual cubes show it around the
+// stones: a loose stone's seen from its centre, a piece's one per group of stones seen from
+// inside one of them (piece/sight_groups.hpp), their six faces rendered when the scene changes
+// (make() and set_lights()), not every frame.
 
 #include <memory>
 #include <optional>
@@ -82,13 +83,23 @@ class FrameRenderer {
   private:
     FrameRenderer() = default;
     Result<bool> update_ring_cube();
+    // The cube stone `i` sees, and where it was seen from; the environment alone without metal.
+    void set_sight(StoneFrame& frame, std::size_t i) const;
     // The background's one colour through `camera`, where it is one.
     std::optional<glm::vec3> flat_background(const Camera& camera) const;
 
     FrameSetup setup_;
     std::unique_ptr<BackgroundPass> background_;
     std::unique_ptr<EnvironmentCube> environment_cube_;  // the environment alone
-    std::unique_ptr<EnvironmentCube> ring_cube_;         // environment + ring, from the centre
+    // Environment + ring as a group of stones sees it (piece/sight_groups.hpp): one cube per
+    // group, seen from its centre; a loose stone's one cube is seen from its own centre.
+    struct SightCube {
+        std::unique_ptr<EnvironmentCube> cube;
+        glm::dvec3 centre{0.0};
+        double half_mm = 0.0;  // the parallax box's half side about the centre
+    };
+    std::vector<SightCube> sight_cubes_;
+    std::vector<std::size_t> sight_of_;  // each stone's cube (index into sight_cubes_)
     // The stones drawn, each a frame made once (its material, placement and shading; the camera
     // and cube are filled in per frame, so a frame copies nothing that allocates), and its kind
     // (an index into the piece's kinds; 0 for a loose stone).
@@ -101,7 +112,6 @@ class FrameRenderer {
     std::unique_ptr<RingRenderer> ring_;
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
-    double cube_half_mm_ = 0.0;
     glm::dvec3 box_lo_{0.0}, box_hi_{0.0};  // about every stone and the metal (cover())
 };
 

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <string>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
@@ -141,7 +143,8 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
 
 Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& background,
                                                    EnvironmentCube& target,
-                                                   const ShadingSettings& lights_from) const {
+                                                   const ShadingSettings& lights_from,
+                                                   const glm::dvec3& centre) const {
     if (background.texture() == target.texture()) {
         return Error{
             "ring: environment cube: the target must differ from the background "
@@ -158,7 +161,7 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
     glViewport(0, 0, size, size);
     // The ring lies between the prongs' seat around the stone (a few mm out) and its own
     // bounding sphere; near at 1/1000 of far keeps 24-bit depth ample.
-    const double far_mm = std::max(1.0, 1.01 * radius_mm_);
+    const double far_mm = std::max(1.0, 1.01 * (radius_mm_ + glm::length(centre)));
     const double near_mm = 1e-3 * far_mm;
     for (int face = 0; face < 6; ++face) {
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
@@ -191,8 +194,10 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         if (index_count_ > 0) {
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
-            draw_mesh(cube_face_projection(face, near_mm, far_mm), glm::vec3(0.0f), false,
-                      lights_from, false);
+            const glm::mat4 seen_from =
+                glm::translate(glm::mat4(1.0f), -glm::vec3(centre));
+            draw_mesh(cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
+                      false, lights_from, false);
         }
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);

@@ -37,11 +37,13 @@ class RingRenderer {
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
                       const ShadingSettings& lights_from) const;
 
-    // Renders background (the environment) + ring into `target`'s six faces as seen from the
-    // stone centre (perspective 90° per face). `target` must be another cube than
-    // `background`. Restores the caller's framebuffer binding and viewport.
+    // Renders background (the environment) + ring into `target`'s six faces as seen from
+    // `centre` (perspective 90° per face; the stone's centre, or a group of stones'). `target`
+    // must be another cube than `background`. Restores the caller's framebuffer binding and
+    // viewport.
     Result<bool> render_environment_cube(const EnvironmentCube& background, EnvironmentCube& target,
-                                         const ShadingSettings& lights_from) const;
+                                         const ShadingSettings& lights_from,
+                                         const glm::dvec3& centre = glm::dvec3(0.0)) const;
 
   private:
     RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment);

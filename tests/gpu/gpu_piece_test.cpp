@@ -106,12 +106,13 @@ TEST(GpuPiece, AStoneTurnedAndMovedInAPieceIsTracedInItsOwnFrame) {
 
 // The halo ring's stones, class by class: the GPU's trace of every stone in the piece against
 // the CPU reference of the same piece, over the pixels where the centre stone, or the small
-// stones, are seen (masks from references of those stones alone). The GPU's virtual cube holds
-// the metal seen from the piece's centre only, so no stone sees another and the centre stone
-// sees the halo's metal from its centre: the figures printed are what that costs (measured: the
-// centre 11.7 dB, the small stones 9.6 dB, 7.4 dB without them; docs/pieces.md). The same GPU
-// picture against a reference whose stones see only the metal (PieceSight::metal_only) says
-// what stones in the cube could gain at most (12.0 and 9.0 dB: none worth a cube's stones).
+// stones, are seen (masks from references of those stones alone). The GPU's virtual cubes hold
+// the metal seen from inside each group of stones, by direction, and no stone sees another:
+// the figures printed are what that costs (measured: the centre 14.7 dB, the small stones
+// 11.3 dB, 7.5 dB without them; with one cube for the piece, seen from its centre, they were
+// 11.7 and 9.6 dB; docs/pieces.md). The same GPU picture against a reference whose stones see
+// only the metal (PieceSight::metal_only) says what stones in the cubes could gain at most
+// (15.2 and 12.1 dB).
 // The small stones drawn must score above a GPU picture without them by a clear margin (1 dB).
 TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     ASSERT_TRUE(gpu_test::context().ok());
