@@ -13,7 +13,6 @@
 #include "piece/sight_groups.hpp"
 #include "util/elapsed.hpp"
 
-
 namespace gem::gpu {
 
 FrameRenderer::FrameRenderer(FrameRenderer&&) noexcept = default;
@@ -136,9 +135,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         // loose stone from its own. A loose stone's cube faces stand about as far as the ring's
         // radius, so rays leaving off-centre see it with parallax. A piece's groups look their
         // cubes up by direction alone (a cube at infinity): against the exact reference, a
-        // parallax box of 8, 16, 32 and 100 times a group's reach gave the halo 7.8, 7.0, 6.6
-        // and 6.5 ΔE00 and at infinity 6.4; the solitaire 6.9, -, 5.1, 4.7 and 4.7
-        // (scripts/piece_accuracy.sh, 2026-12-05).
+        // parallax box (about each stone's frame origin) of 8, 16, 32 and 100 times a group's
+        // reach gave the halo 7.8, 7.0, 6.6 and 6.5 ΔE00 and at infinity 6.4; the solitaire
+        // 6.9, -, 5.1, 4.7 and 4.7 (scripts/piece_accuracy.sh, 2026-12-05).
         std::vector<SightGroup> groups;
         if (s.piece != nullptr) groups = sight_groups(*s.piece);
         if (groups.empty()) groups.push_back({glm::dvec3(0.0), metal->radius_mm(), true, {0}});

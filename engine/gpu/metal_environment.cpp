@@ -77,7 +77,8 @@ Result<MetalEnvironment> MetalEnvironment::make(const EnvironmentCube& environme
     glTexSubImage2D(GL_TEXTURE_2D, 0, 0, 0, kBrdfTableSize, kBrdfTableSize, GL_RG, GL_FLOAT,
                     brdf_table_values().data());
     if (roughness >= kSmoothRoughness) {
-        auto cube = EnvironmentCube::allocate(metal_environment_face(roughness, environment.face_size()));
+        auto cube =
+            EnvironmentCube::allocate(metal_environment_face(roughness, environment.face_size()));
         if (!cube) return Error{cube.error()};
         m.filtered_ = std::make_unique<EnvironmentCube>(std::move(cube).value());
         auto filtered = filter(environment, *m.filtered_, roughness);

@@ -38,8 +38,7 @@ glm::mat4 cube_face_projection(int face, double near_mm, double far_mm) {
     return glm::mat4(m);
 }
 
-RingRenderer::RingRenderer(ProgramVariants ring, Program background,
-                           MetalEnvironment environment)
+RingRenderer::RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment)
     : ring_(std::move(ring)),
       background_(std::move(background)),
       environment_(std::move(environment)) {}
@@ -194,8 +193,7 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         if (index_count_ > 0) {
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
-            const glm::mat4 seen_from =
-                glm::translate(glm::mat4(1.0f), -glm::vec3(centre));
+            const glm::mat4 seen_from = glm::translate(glm::mat4(1.0f), -glm::vec3(centre));
             draw_mesh(cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
                       false, lights_from, false);
         }

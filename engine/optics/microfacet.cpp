@@ -107,8 +107,7 @@ std::vector<float> environment_brdf_table(int size, int samples) {
     table.reserve(static_cast<std::size_t>(2 * size * size));
     for (int j = 0; j < size; ++j) {
         for (int i = 0; i < size; ++i) {
-            const EnvironmentBrdf e =
-                environment_brdf((i + 0.5) / size, (j + 0.5) / size, samples);
+            const EnvironmentBrdf e = environment_brdf((i + 0.5) / size, (j + 0.5) / size, samples);
             table.push_back(static_cast<float>(e.scale));
             table.push_back(static_cast<float>(e.bias));
         }

@@ -79,8 +79,8 @@ std::vector<SightGroup> sight_groups(const Piece& piece) {
         }
         centre[i] = 0.5 * (lo + hi);
         for (const glm::dvec3& v : piece.stone_of(i).vertices) {
-            radius[i] = std::max(radius[i],
-                                 glm::length(piece.stones[i].placement.to_piece(v) - centre[i]));
+            radius[i] =
+                std::max(radius[i], glm::length(piece.stones[i].placement.to_piece(v) - centre[i]));
         }
     }
     std::vector<std::size_t> order(piece.stones.size());

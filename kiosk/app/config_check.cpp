@@ -15,7 +15,8 @@ int check_config(const std::filesystem::path& file, std::ostream& out) {
         const std::vector<KeptKey> keys =
             read_trusted_key_files(load.config.catalogue.trusted_keys, problems);
         std::vector<TrustedKeyText> texts;
-        for (const KeptKey& key : keys) texts.push_back(TrustedKeyText{key.file.string(), key.text});
+        for (const KeptKey& key : keys)
+            texts.push_back(TrustedKeyText{key.file.string(), key.text});
         std::vector<std::string> unparsed;
         (void)parse_trust(true, texts, unparsed);
         for (const std::string& why : unparsed) problems.push_back("trusted key left out: " + why);

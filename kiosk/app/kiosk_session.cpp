@@ -20,8 +20,8 @@
 #include "display/open_display.hpp"
 #include "input/touch_mapping.hpp"
 #include "render/camera.hpp"
-#include "settings/config_fallback.hpp"
 #include "service/log.hpp"
+#include "settings/config_fallback.hpp"
 
 namespace gem::kiosk {
 

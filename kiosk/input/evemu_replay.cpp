@@ -70,7 +70,8 @@ Result<EvemuDevice> read_description(const std::string& path) {
     std::ifstream in(path, std::ios::binary);
     if (!in) return Error{"evemu description " + path + ": " + std::strerror(errno)};
     std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
-    const std::string invalid = "evemu description " + path + ": not a valid evemu device description";
+    const std::string invalid =
+        "evemu description " + path + ": not a valid evemu device description";
     if (!has_a_first_line(text)) return Error{invalid};
     File file(fmemopen(text.data(), text.size(), "r"));
     EvemuDevice device(evemu_new(nullptr));

@@ -10,8 +10,9 @@ namespace {
 
 Result<KeptConfig> kept_config(const fs::path& state_dir) {
     if (state_dir.empty()) {
-        return Error{"the kiosk was started without a state folder to keep one in: --state-dir, "
-                     "or systemd's StateDirectory="};
+        return Error{
+            "the kiosk was started without a state folder to keep one in: --state-dir, "
+            "or systemd's StateDirectory="};
     }
     return read_last_good_config(state_dir);
 }
@@ -24,8 +25,9 @@ ResolvedConfig set_aside(const std::string& why, const fs::path& state_dir) {
         "the config is set aside (" + why + "), so no new catalogue is accepted until it is fixed";
     auto kept = kept_config(state_dir);
     if (!kept) {
-        out.errors.push_back(why + "; the whole file is set aside and the built-in defaults are "
-                                   "used, as no good config was kept (" +
+        out.errors.push_back(why +
+                             "; the whole file is set aside and the built-in defaults are "
+                             "used, as no good config was kept (" +
                              kept.error() + "); no new catalogue is accepted until it is fixed");
         return out;
     }
@@ -97,8 +99,10 @@ ResolvedConfig resolve_config(const fs::path& file, const fs::path& state_dir) {
             out.trusted_keys = kept.value().keys;
             out.signatures_required = true;
             out.errors.push_back(
-                file.string() + ": lists no trusted key but has errors, while the last good config "
-                "(kept in " + (state_dir / kLastGoodConfigName).string() + ") trusted " +
+                file.string() +
+                ": lists no trusted key but has errors, while the last good config "
+                "(kept in " +
+                (state_dir / kLastGoodConfigName).string() + ") trusted " +
                 std::to_string(kept.value().keys.size()) +
                 (kept.value().keys.size() == 1 ? " key" : " keys") +
                 ": catalogues must still be signed by them");

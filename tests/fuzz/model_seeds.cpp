@@ -26,7 +26,8 @@ void write_file(const fs::path& path, const std::string& bytes) {
 std::string obj_as_cad_writes(const Stone& stone, bool relative_indices) {
     std::ostringstream out;
     out << "# Rhino\n\nmtllib gem.mtl\no " << stone.name << "\ng stone\nusemtl Diamond\n";
-    for (const glm::dvec3& v : stone.vertices) out << "v " << v.x << " " << v.y << " " << v.z << "\n";
+    for (const glm::dvec3& v : stone.vertices)
+        out << "v " << v.x << " " << v.y << " " << v.z << "\n";
     out << "vt 0 0\n";
     for (const Facet& f : stone.facets) {
         out << "vn " << f.plane.n.x << " " << f.plane.n.y << " " << f.plane.n.z << "\n";
@@ -72,7 +73,9 @@ std::string ascii_stl(const Stone& stone) {
 void put_u32(std::string& out, std::uint32_t v) {
     for (int i = 0; i < 4; ++i) out.push_back(static_cast<char>((v >> (8 * i)) & 0xFF));
 }
-void put_f32(std::string& out, double v) { put_u32(out, std::bit_cast<std::uint32_t>(float(v))); }
+void put_f32(std::string& out, double v) {
+    put_u32(out, std::bit_cast<std::uint32_t>(float(v)));
+}
 
 // Binary STL whose 80-byte header starts with "solid", as SolidWorks writes it.
 std::string binary_stl(const Stone& stone) {

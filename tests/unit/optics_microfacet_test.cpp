@@ -75,16 +75,19 @@ TEST(Microfacet, WhiteFurnaceAndTheEnvironmentBrdfAgreeWithQuadrature) {
             // Single scattering only loses energy (rays masked by other microfacets): at most
             // all of it, and nearly all of it while smooth.
             EXPECT_LE(white, 1.0 + 2e-4) << roughness << " " << n_dot_v;  // the rule's error
-            EXPECT_GT(white, roughness <= 0.1 ? 0.99 : roughness <= 0.25 ? 0.94 : 0.5)
+            EXPECT_GT(white, roughness <= 0.1    ? 0.99
+                             : roughness <= 0.25 ? 0.94
+                                                 : 0.5)
                 << roughness << " " << n_dot_v;
             const EnvironmentBrdf e = environment_brdf(n_dot_v, roughness);
             EXPECT_NEAR(e.scale + e.bias, white, 1e-3) << roughness << " " << n_dot_v;
             EXPECT_NEAR(e.bias, black, 1e-3) << roughness << " " << n_dot_v;
             const EnvironmentBrdf fit = karis_mobile_fit(n_dot_v, roughness);
-            std::printf("roughness %.2f, n·v %.1f: white %.4f, black %.4f; sampled %.4f, %.4f; "
-                        "Karis' fit %.4f, %.4f\n",
-                        roughness, n_dot_v, white, black, e.scale + e.bias, e.bias,
-                        fit.scale + fit.bias, fit.bias);
+            std::printf(
+                "roughness %.2f, n·v %.1f: white %.4f, black %.4f; sampled %.4f, %.4f; "
+                "Karis' fit %.4f, %.4f\n",
+                roughness, n_dot_v, white, black, e.scale + e.bias, e.bias, fit.scale + fit.bias,
+                fit.bias);
         }
     }
 }
@@ -124,8 +127,7 @@ TEST(Microfacet, TheSampleWeightsAverageToTheReflectance) {
                                  ggx_alpha(roughness));
     }
     for (int c = 0; c < 3; ++c) {
-        EXPECT_NEAR(sum[c] / kDraws, quadrature_reflectance(n_dot_v, roughness, f0[c]), 3e-3)
-            << c;
+        EXPECT_NEAR(sum[c] / kDraws, quadrature_reflectance(n_dot_v, roughness, f0[c]), 3e-3) << c;
     }
 }
 

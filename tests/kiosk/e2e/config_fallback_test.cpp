@@ -28,7 +28,9 @@ std::string read_text(const fs::path& file) {
     return text.str();
 }
 
-void write_text(const fs::path& file, const std::string& text) { std::ofstream(file) << text; }
+void write_text(const fs::path& file, const std::string& text) {
+    std::ofstream(file) << text;
+}
 
 // The line of `log` holding `text`, or "".
 std::string line_with(const std::string& log, const std::string& text) {
@@ -55,9 +57,9 @@ TEST(KioskConfig, ASyntaxErrorKeepsTheLastGoodConfigAndRefusesAnUnsignedDelivery
     const fs::path dir = fresh_dir("config-fallback");
     const fs::path config = write_config(dir, sapphire.value());
     int line = 0;
-    const std::string good = replaced(
-        read_text(config), "[catalogue]\n",
-        "[catalogue]\ntrusted_keys = [\"" + kChainKey.string() + "\"]\n", &line);
+    const std::string good =
+        replaced(read_text(config), "[catalogue]\n",
+                 "[catalogue]\ntrusted_keys = [\"" + kChainKey.string() + "\"]\n", &line);
     write_text(config, good);
     const fs::path state = dir / "state";
     fs::create_directories(state / "inbox");
@@ -77,14 +79,13 @@ TEST(KioskConfig, ASyntaxErrorKeepsTheLastGoodConfigAndRefusesAnUnsignedDelivery
                         "--seconds", "150", "--snapshot-last"});
     ASSERT_TRUE(kiosk.wait_for_line("first frame on screen", 60s)) << kiosk.log();
     const std::string fallback = line_with(kiosk.log(), "is set aside");
-    EXPECT_EQ(fallback.rfind("<3>gemkiosk: " + config.string() + ":" +
-                                 std::to_string(broken_line) + ":",
-                             0),
+    EXPECT_EQ(fallback.rfind(
+                  "<3>gemkiosk: " + config.string() + ":" + std::to_string(broken_line) + ":", 0),
               0u)
         << kiosk.log();
     EXPECT_NE(fallback.find("the last good config"), std::string::npos) << fallback;
-    EXPECT_NE(line_with(kiosk.log(), "catalogues must be signed by a trusted key: 6210369F81C2ADCE"),
-              "")
+    EXPECT_NE(
+        line_with(kiosk.log(), "catalogues must be signed by a trusted key: 6210369F81C2ADCE"), "")
         << kiosk.log();
 
     // A stranger's catalogue, unsigned, dropped in the inbox: refused, with the reason.
@@ -157,8 +158,8 @@ TEST(KioskConfig, CheckConfigPassesTheShippedFileAndNamesEveryProblemOfABrokenOn
     EXPECT_NE(b.log.find("2 problems"), std::string::npos) << b.log;
 
     const fs::path keys = dir / "keys.toml";
-    write_text(keys, replaced(text, "trusted_keys = []\n", "trusted_keys = [\"chain.pub\"]\n",
-                              &line));
+    write_text(keys,
+               replaced(text, "trusted_keys = []\n", "trusted_keys = [\"chain.pub\"]\n", &line));
     write_text(dir / "chain.pub", "untrusted comment: not a key\nhello\n");
     const Checked c = check(keys);
     EXPECT_EQ(c.status, 1) << c.log;

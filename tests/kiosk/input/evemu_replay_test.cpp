@@ -348,13 +348,13 @@ TEST(EvemuReplay, ErrorsNameTheFileAndLine) {
 // An event line whose fields are wider than libevemu's format reads (a five-digit code) is
 // refused by the kiosk, naming its line, before libevemu's reader, which leaks on it.
 TEST(EvemuReplay, AnEventLineWiderThanLibevemuReadsIsRefusedWithItsLine) {
-    const std::string wide = write_file(
-        "wide.events", "E: 0.000001 0003 0035 0100\nE: 0.075000 0000 0000A 0\n");
+    const std::string wide =
+        write_file("wide.events", "E: 0.000001 0003 0035 0100\nE: 0.075000 0000 0000A 0\n");
     const Result<EvemuReplay> opened =
         EvemuReplay::open(options_for(wide, data_dir + "N-Trig_MultiTouch.desc"));
     ASSERT_FALSE(opened.ok());
-    EXPECT_EQ(opened.error(), "evemu recording " + wide +
-                                  ":2: damaged event line \"E: 0.075000 0000 0000A 0\"");
+    EXPECT_EQ(opened.error(),
+              "evemu recording " + wide + ":2: damaged event line \"E: 0.075000 0000 0000A 0\"");
 }
 
 // A description with no line libevemu would read (empty, blank lines, one character, a NUL) is
@@ -363,8 +363,8 @@ TEST(EvemuReplay, AnEventLineWiderThanLibevemuReadsIsRefusedWithItsLine) {
 TEST(EvemuReplay, AnEmptyDescriptionIsRefusedWithoutLeaking) {
     const std::string events = write_file("one.events", "E: 0.000001 0000 0000 0000\n");
     int n = 0;
-    for (const std::string& text : {std::string(""), std::string("\n\n\n"), std::string("x"),
-                                   std::string("\0N: x\n", 7)}) {
+    for (const std::string& text :
+         {std::string(""), std::string("\n\n\n"), std::string("x"), std::string("\0N: x\n", 7)}) {
         const std::string desc = write_file("empty-" + std::to_string(n++) + ".desc", text);
         const Result<EvemuReplay> opened = EvemuReplay::open(options_for(events, desc));
         ASSERT_FALSE(opened.ok());

@@ -240,8 +240,9 @@ TEST_F(SignedCatalogue, WithoutAReadableKeyEveryDeliveryIsRefused) {
     std::vector<std::string> problems;
     const CatalogueTrust trust = parse_trust(true, {{"chain.pub", "not a key\n"}}, problems);
     ASSERT_EQ(problems.size(), 1u);
-    EXPECT_EQ(problems[0], "chain.pub: not a minisign public key (its key line must be 56 base64 "
-                           "characters)");
+    EXPECT_EQ(problems[0],
+              "chain.pub: not a minisign public key (its key line must be 56 base64 "
+              "characters)");
     EXPECT_TRUE(trust.required);
     EXPECT_EQ(verdict(dir, trust),
               "catalogue 'signed-nokey' rejected: catalogue.toml.minisig: signed by key " +

@@ -194,8 +194,8 @@ TEST(ConfigFallback, ABadValueKeepsItsDefaultAndTheRestApplies) {
     write(shop.config, edited);
     const ResolvedConfig resolved = resolve_config(shop.config, shop.state);
     ASSERT_EQ(resolved.errors.size(), 1u);
-    EXPECT_EQ(resolved.errors[0], shop.config.string() +
-                                      ":3: display.rotation: expected one of 0, 90, 180, 270");
+    EXPECT_EQ(resolved.errors[0],
+              shop.config.string() + ":3: display.rotation: expected one of 0, 90, 180, 270");
     EXPECT_EQ(resolved.config.display.rotation_deg, 0);
     EXPECT_EQ(resolved.config.display.connector, "HDMI-A-2");
     EXPECT_TRUE(resolved.deliveries_refused_because.empty());
