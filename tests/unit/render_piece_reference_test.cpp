@@ -31,6 +31,28 @@ RenderSettings small_picture() {
     return s;
 }
 
+// A 10 mm square plate of `metal` facing up, and no stone.
+Piece plate(Metal metal, float roughness) {
+    Piece piece;
+    piece.name = "plate";
+    piece.metal.f0 = metal_f0(metal);
+    piece.metal.roughness = roughness;
+    const float h = 5.0f;
+    piece.metal.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
+    piece.metal.normals.assign(4, glm::vec3(0, 1, 0));
+    piece.metal.indices = {0, 2, 1, 0, 3, 2};
+    return piece;
+}
+
+// Seen straight from above, the plate filling the picture, without lights.
+RenderSettings from_above() {
+    RenderSettings s = small_picture();
+    s.camera.elevation_deg = 90.0;
+    s.camera.zoom = 2.0;
+    s.shading.lights.clear();
+    return s;
+}
+
 TEST(PieceReference, APieceOfOneStoneIsTheLooseStonesReference) {
     const Stone stone = test::round_diamond(6.5);
     Piece piece;
@@ -58,18 +80,8 @@ TEST(PieceReference, APieceOfOneStoneIsTheLooseStonesReference) {
 
 TEST(PieceReference, AMirrorOfMetalUnderAUniformSkyShowsItsF0) {
     // A polished platinum plate facing up, seen straight from above.
-    Piece piece;
-    piece.name = "plate";
-    piece.metal.f0 = metal_f0(Metal::platinum);
-    piece.metal.roughness = 0.0f;
-    const float h = 5.0f;
-    piece.metal.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    piece.metal.normals.assign(4, glm::vec3(0, 1, 0));
-    piece.metal.indices = {0, 2, 1, 0, 3, 2};
-    RenderSettings s = small_picture();
-    s.camera.elevation_deg = 90.0;
-    s.camera.zoom = 2.0;  // the plate fills the picture
-    s.shading.lights.clear();
+    const Piece piece = plate(Metal::platinum, 0.0f);
+    const RenderSettings s = from_above();
     auto image = render_piece_reference(piece, Environment::uniform(glm::dvec3(1.0)), s);
     ASSERT_TRUE(image);
     const glm::vec4 centre = image.value().at(s.width / 2, s.height / 2);
@@ -82,19 +94,9 @@ TEST(PieceReference, AMirrorOfMetalUnderAUniformSkyShowsItsF0) {
 // sky: on average it reflects F0·scale + bias of the environment BRDF, which the microfacet
 // test holds to quadrature. 16 × 16 pixels of 16 samples each are averaged against the noise.
 TEST(PieceReference, ARoughPlateUnderAUniformSkyReflectsItsEnvironmentBrdf) {
-    Piece piece;
-    piece.name = "plate";
-    piece.metal.f0 = metal_f0(Metal::yellow_gold);
-    piece.metal.roughness = 0.25f;
-    const float h = 5.0f;
-    piece.metal.positions = {{-h, 0, -h}, {h, 0, -h}, {h, 0, h}, {-h, 0, h}};
-    piece.metal.normals.assign(4, glm::vec3(0, 1, 0));
-    piece.metal.indices = {0, 2, 1, 0, 3, 2};
-    RenderSettings s = small_picture();
-    s.camera.elevation_deg = 90.0;
-    s.camera.zoom = 2.0;
+    const Piece piece = plate(Metal::yellow_gold, 0.25f);
+    RenderSettings s = from_above();
     s.samples_per_pixel = 16;
-    s.shading.lights.clear();
     auto image = render_piece_reference(piece, Environment::uniform(glm::dvec3(1.0)), s);
     ASSERT_TRUE(image);
     glm::dvec3 mean(0.0);

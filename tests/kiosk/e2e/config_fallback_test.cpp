@@ -7,7 +7,6 @@
 
 #include <algorithm>
 #include <fstream>
-#include <sstream>
 
 #include "e2e_fixture.hpp"
 #include "kiosk_process.hpp"
@@ -20,25 +19,6 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
 const fs::path kChainKey = fs::path(GEM_FIXTURES_DIR) / "signature" / "fixture.pub";
-
-std::string read_text(const fs::path& file) {
-    std::ifstream in(file);
-    std::stringstream text;
-    text << in.rdbuf();
-    return text.str();
-}
-
-void write_text(const fs::path& file, const std::string& text) {
-    std::ofstream(file) << text;
-}
-
-// The line of `log` holding `text`, or "".
-std::string line_with(const std::string& log, const std::string& text) {
-    const auto at = log.find(text);
-    if (at == std::string::npos) return "";
-    const auto start = log.rfind('\n', at) + 1;
-    return log.substr(start, log.find('\n', at) - start);
-}
 
 // `text` with `from` (which it holds once) replaced; the 1-based line it was on.
 std::string replaced(const std::string& text, const std::string& from, const std::string& to,

@@ -8,6 +8,7 @@
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <memory>
 #include <sstream>
@@ -53,6 +54,22 @@ Result<fs::path> test_catalogue(const std::string& stone) {
     manifest << "[catalogue]\nname = \"" << stone << "\"\n\n[[stone]]\nname = \"" << stone
              << "\"\ndatabase = \"" << stone << ".gemdb\"\nring = \"parametric\"\n";
     return dir;
+}
+
+std::string read_text(const fs::path& file) {
+    std::ifstream in(file, std::ios::binary);
+    return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
+}
+
+void write_text(const fs::path& file, const std::string& text) {
+    std::ofstream(file, std::ios::binary | std::ios::trunc) << text;
+}
+
+std::string line_with(const std::string& log, const std::string& text) {
+    const auto at = log.find(text);
+    if (at == std::string::npos) return "";
+    const auto start = log.rfind('\n', at) + 1;
+    return log.substr(start, log.find('\n', at) - start);
 }
 
 fs::path write_config(const fs::path& dir, const fs::path& catalogue, const std::string& extra) {

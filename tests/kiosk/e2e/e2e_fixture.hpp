@@ -30,6 +30,11 @@ Result<std::filesystem::path> test_catalogue(const std::string& stone);
 // A fresh, empty directory for one test under the artefacts.
 std::filesystem::path fresh_dir(const std::string& name);
 
+std::string read_text(const std::filesystem::path& file);
+void write_text(const std::filesystem::path& file, const std::string& text);
+// The line of the kiosk's `log` holding `text`, or "".
+std::string line_with(const std::string& log, const std::string& text);
+
 // Writes <dir>/gemkiosk.toml: headless kiosk of kWidth × kHeight drawing as fast as it can, a
 // black background, one light, no attract mode, no inertia, no cross-fade, the
 // given default catalogue, state under <dir>/state, snapshots in <dir>/snapshots. `extra` is

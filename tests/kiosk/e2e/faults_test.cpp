@@ -14,14 +14,6 @@ namespace {
 namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
-// The line of `log` holding `text`, or "".
-std::string line_with(const std::string& log, const std::string& text) {
-    const auto at = log.find(text);
-    if (at == std::string::npos) return "";
-    const auto start = log.rfind('\n', at) + 1;
-    return log.substr(start, log.find('\n', at) - start);
-}
-
 TEST(KioskFaults, NoDisplayIsReportedOnceAndTheKioskKeepsRunning) {
     auto catalogue = test_catalogue("tolkowsky-diamond");
     ASSERT_TRUE(catalogue.ok());

@@ -4,8 +4,6 @@
 // against the values it sets, not against what the loader returns for another file.
 #include <gtest/gtest.h>
 
-#include <fstream>
-
 #include "catalogue_test_support.hpp"
 #include "settings/config_fallback.hpp"
 
@@ -14,11 +12,7 @@ namespace {
 
 namespace fs = std::filesystem;
 using catalogue_test::fresh_dir;
-
-void write(const fs::path& path, const std::string& text) {
-    fs::create_directories(path.parent_path());
-    std::ofstream(path, std::ios::binary) << text;
-}
+using catalogue_test::write_text;
 
 // A shop's config: a connector, a rotation, a looks preset, a chain's key.
 const std::string kShopConfig =
@@ -33,6 +27,13 @@ const std::string kChainKey =
     "untrusted comment: minisign public key 0123456789ABCDEF\n"
     "RWTvzasSeHgpAQbV7wtUqKVeBRpCYq0sMh6+yfGVb9r0ErPNDhQbBTba\n";
 
+// The shop's config with `from` (which it holds once) written as `to`.
+std::string shop_config_with(const std::string& from, const std::string& to) {
+    std::string text = kShopConfig;
+    text.replace(text.find(from), from.size(), to);
+    return text;
+}
+
 struct Shop {
     fs::path dir;
     fs::path config;
@@ -44,8 +45,8 @@ Shop shop_with_a_kept_config(const std::string& name) {
     Shop shop{fresh_dir(name), {}, {}};
     shop.config = shop.dir / "etc" / "gemkiosk.toml";
     shop.state = shop.dir / "state";
-    write(shop.config, kShopConfig);
-    write(shop.dir / "etc" / "chain.pub", kChainKey);
+    write_text(shop.config, kShopConfig);
+    write_text(shop.dir / "etc" / "chain.pub", kChainKey);
     const ResolvedConfig first = resolve_config(shop.config, shop.state);
     EXPECT_TRUE(first.errors.empty()) << first.errors.front();
     EXPECT_TRUE(first.good.has_value());
@@ -80,11 +81,11 @@ TEST(LastGoodConfig, NoneKeptOrDamagedIsAnErrorNamingTheFile) {
     auto none = read_last_good_config(state);
     ASSERT_FALSE(none.ok());
     EXPECT_NE(none.error().find((state / kLastGoodConfigName).string()), std::string::npos);
-    write(state / kLastGoodConfigName, "source = \"/etc/x.toml\"\nconfig = \"\"\"cut sh");
+    write_text(state / kLastGoodConfigName, "source = \"/etc/x.toml\"\nconfig = \"\"\"cut sh");
     auto damaged = read_last_good_config(state);
     ASSERT_FALSE(damaged.ok());
     EXPECT_NE(damaged.error().find("damaged"), std::string::npos) << damaged.error();
-    write(state / kLastGoodConfigName, "source = \"/etc/x.toml\"\n");
+    write_text(state / kLastGoodConfigName, "source = \"/etc/x.toml\"\n");
     auto missing = read_last_good_config(state);
     ASSERT_FALSE(missing.ok());
     EXPECT_NE(missing.error().find("'config' is missing"), std::string::npos) << missing.error();
@@ -97,7 +98,7 @@ TEST(LastGoodConfig, AHandWrittenCopyIsReadAndStandsInForABrokenFile) {
     fs::create_directories(dir / "state");
     fs::copy_file(fs::path(GEM_FIXTURES_DIR) / "config" / kLastGoodConfigName,
                   dir / "state" / kLastGoodConfigName);
-    write(dir / "gemkiosk.toml", "[display]\nrotation = 90 degrees\n");
+    write_text(dir / "gemkiosk.toml", "[display]\nrotation = 90 degrees\n");
     const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
     EXPECT_EQ(resolved.config.display.connector, "HDMI-A-2");
     EXPECT_EQ(resolved.config.display.rotation_deg, 270);
@@ -117,8 +118,8 @@ TEST(LastGoodConfig, AHandWrittenCopyIsReadAndStandsInForABrokenFile) {
 
 TEST(ConfigFallback, AGoodConfigIsUsedAndOfferedForKeeping) {
     const fs::path dir = fresh_dir("fallback-good");
-    write(dir / "gemkiosk.toml", kShopConfig);
-    write(dir / "chain.pub", kChainKey);
+    write_text(dir / "gemkiosk.toml", kShopConfig);
+    write_text(dir / "chain.pub", kChainKey);
     const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
     EXPECT_TRUE(resolved.errors.empty());
     EXPECT_EQ(resolved.config.display.connector, "HDMI-A-2");
@@ -135,9 +136,7 @@ TEST(ConfigFallback, AGoodConfigIsUsedAndOfferedForKeeping) {
 // stand, and deliveries are refused; the one line names the file, the line and the fallback.
 TEST(ConfigFallback, ASyntaxErrorFallsBackToTheLastGoodConfigAndItsKeys) {
     const Shop shop = shop_with_a_kept_config("fallback-syntax");
-    std::string broken = kShopConfig;
-    broken.replace(broken.find("msaa = 2"), 8, "msaa = 4 x");
-    write(shop.config, broken);
+    write_text(shop.config, shop_config_with("msaa = 2", "msaa = 4 x"));
     fs::remove(shop.dir / "etc" / "chain.pub");  // even the key file gone: the kept copy stands
 
     const ResolvedConfig resolved = resolve_config(shop.config, shop.state);
@@ -175,7 +174,7 @@ TEST(ConfigFallback, AnUnreadableFileIsSetAsideAsOneThatDoesNotParse) {
 
 TEST(ConfigFallback, WithNothingKeptTheDefaultsStandAndDeliveriesAreStillRefused) {
     const fs::path dir = fresh_dir("fallback-nothing-kept");
-    write(dir / "gemkiosk.toml", "[display\nrotation = 90\n");
+    write_text(dir / "gemkiosk.toml", "[display\nrotation = 90\n");
     const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
     EXPECT_EQ(resolved.config.display.rotation_deg, 0);
     EXPECT_FALSE(resolved.deliveries_refused_because.empty());
@@ -189,9 +188,7 @@ TEST(ConfigFallback, WithNothingKeptTheDefaultsStandAndDeliveriesAreStillRefused
 // and the file is not kept.
 TEST(ConfigFallback, ABadValueKeepsItsDefaultAndTheRestApplies) {
     const Shop shop = shop_with_a_kept_config("fallback-bad-value");
-    std::string edited = kShopConfig;
-    edited.replace(edited.find("rotation = 90"), 13, "rotation = 45");
-    write(shop.config, edited);
+    write_text(shop.config, shop_config_with("rotation = 90", "rotation = 45"));
     const ResolvedConfig resolved = resolve_config(shop.config, shop.state);
     ASSERT_EQ(resolved.errors.size(), 1u);
     EXPECT_EQ(resolved.errors[0],
@@ -206,9 +203,7 @@ TEST(ConfigFallback, ABadValueKeepsItsDefaultAndTheRestApplies) {
 // config's keys are still required.
 TEST(ConfigFallback, AMisspeltCatalogueTableDoesNotDropTheKeys) {
     const Shop shop = shop_with_a_kept_config("fallback-misspelt");
-    std::string edited = kShopConfig;
-    edited.replace(edited.find("[catalogue]"), 11, "[catalouge]");
-    write(shop.config, edited);
+    write_text(shop.config, shop_config_with("[catalogue]", "[catalouge]"));
     const ResolvedConfig resolved = resolve_config(shop.config, shop.state);
     EXPECT_TRUE(resolved.signatures_required);
     ASSERT_EQ(resolved.trusted_keys.size(), 1u);
@@ -218,7 +213,7 @@ TEST(ConfigFallback, AMisspeltCatalogueTableDoesNotDropTheKeys) {
     EXPECT_NE(resolved.errors[1].find("lists no trusted key but has errors"), std::string::npos)
         << resolved.errors[1];
     // A clean config that drops the keys on purpose is obeyed.
-    write(shop.config, "[display]\nrotation = 90\n");
+    write_text(shop.config, "[display]\nrotation = 90\n");
     const ResolvedConfig dropped = resolve_config(shop.config, shop.state);
     EXPECT_TRUE(dropped.errors.empty());
     EXPECT_FALSE(dropped.signatures_required);
@@ -226,8 +221,9 @@ TEST(ConfigFallback, AMisspeltCatalogueTableDoesNotDropTheKeys) {
 
 TEST(ConfigFallback, AKeyFileThatCannotBeReadIsNamedAndSignaturesStayRequired) {
     const fs::path dir = fresh_dir("fallback-key-unreadable");
-    write(dir / "gemkiosk.toml",
-          "[catalogue]\ntrusted_keys = [\"chain.pub\", \"/dev/zero\", \"" + dir.string() + "\"]\n");
+    write_text(
+        dir / "gemkiosk.toml",
+        "[catalogue]\ntrusted_keys = [\"chain.pub\", \"/dev/zero\", \"" + dir.string() + "\"]\n");
     const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
     EXPECT_TRUE(resolved.signatures_required);
     EXPECT_TRUE(resolved.trusted_keys.empty());
