@@ -35,12 +35,14 @@ double extent(const std::vector<glm::dvec3>& positions, const MeshTriangles& tri
 std::size_t drop_zero_area_triangles(const std::vector<glm::dvec3>& positions,
                                      MeshTriangles& triangles, double relative) {
     const double least = relative * extent(positions, triangles);
+    const auto repeated = [](const std::array<std::uint32_t, 3>& tri) {
+        return tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0];
+    };
     const auto flat = [&](const std::array<std::uint32_t, 3>& tri) {
         const glm::dvec3 a = positions[tri[0]], b = positions[tri[1]], c = positions[tri[2]];
         const double longest_edge =
             std::max({glm::length(b - a), glm::length(c - b), glm::length(a - c)});
-        return tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0] ||
-               !(glm::length(glm::cross(b - a, c - a)) > least * longest_edge);
+        return repeated(tri) || !(glm::length(glm::cross(b - a, c - a)) > least * longest_edge);
     };
     std::size_t dropped = 0;
     for (std::size_t t = 0; t < triangles.size();) {
@@ -49,11 +51,10 @@ std::size_t drop_zero_area_triangles(const std::vector<glm::dvec3>& positions,
             ++t;
             continue;
         }
-        const bool repeated = tri[0] == tri[1] || tri[1] == tri[2] || tri[2] == tri[0];
         triangles[t] = triangles.back();
         triangles.pop_back();
         ++dropped;
-        if (repeated) continue;
+        if (repeated(tri)) continue;
         // The long edge p → q and the corner m on it; the neighbour holds q → p.
         int m = 0;
         double longest = -1.0;

@@ -206,10 +206,6 @@ Result<ClipSolid> intersect(const std::vector<FacetPlane>& planes, double& size)
     return clip_all(planes, lo - margin, hi + margin, 1e-11 * size);
 }
 
-double loop_area(const std::vector<glm::dvec3>& vertices, const std::vector<std::uint32_t>& loop) {
-    return loop.size() < 3 ? 0.0 : 0.5 * glm::length(newell_normal(vertices, loop));
-}
-
 }  // namespace
 
 Result<Stone> stone_from_planes(const std::vector<FacetPlane>& planes, std::string name) {

@@ -15,6 +15,11 @@ namespace gem {
 // counter-clockwise.
 glm::dvec3 newell_normal(const std::vector<glm::dvec3>& vertices,
                          const std::vector<std::uint32_t>& loop);
+// The loop's area (0 for fewer than three corners).
+inline double loop_area(const std::vector<glm::dvec3>& vertices,
+                        const std::vector<std::uint32_t>& loop) {
+    return loop.size() < 3 ? 0.0 : 0.5 * glm::length(newell_normal(vertices, loop));
+}
 
 // Appends the triangles of the simple polygon `loop` (indices into `vertices`), which winds
 // counter-clockwise seen from the side `normal` points to. The triangles keep that winding.

@@ -39,13 +39,12 @@ std::size_t FrameRenderer::first_of_kind(std::size_t k) const {
 
 Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
                                             const StoneModel& model) {
-    StoneFrame frame = frames_[first_of_kind(k)];
+    const std::size_t first = first_of_kind(k);
+    StoneFrame frame = frames_[first];
     frame.placement = {};
     frame.stone = &kind(k);
     frame.camera = camera;
-    set_sight(frame, first_of_kind(k));
-    // Drawn at the centre: its cube is looked up from where the stone sits in the piece.
-    frame.cube_centre_mm -= frames_[first_of_kind(k)].placement.position;
+    set_sight(frame, first);
     frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
     glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
@@ -130,6 +129,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
+        r.ring_radius_mm_ = metal->radius_mm();
         for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
         // Each group of stones sees the metal from its own centre (piece/sight_groups.hpp), a
         // loose stone from its own. A loose stone's cube faces stand about as far as the ring's
@@ -140,7 +140,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         // 6.9, -, 5.1, 4.7 and 4.7 (scripts/piece_accuracy.sh, 2026-12-05).
         std::vector<SightGroup> groups;
         if (s.piece != nullptr) groups = sight_groups(*s.piece);
-        if (groups.empty()) groups.push_back({glm::dvec3(0.0), metal->radius_mm(), true, {0}});
+        if (groups.empty()) groups.push_back({glm::dvec3(0.0), true, {0}});
         r.sight_of_.assign(r.frames_.size(), 0);
         for (std::size_t g = 0; g < groups.size(); ++g) {
             const SightGroup& group = groups[g];
@@ -149,10 +149,8 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
             const int face = group.own ? s.cube_face : std::max(64, s.cube_face / 4);
             auto sight_cube = EnvironmentCube::allocate(face);
             if (!sight_cube) return Error{sight_cube.error()};
-            const double half = s.piece != nullptr ? 0.0 : metal->radius_mm();
             r.sight_cubes_.push_back(
-                {std::make_unique<EnvironmentCube>(std::move(sight_cube).value()), group.centre,
-                 half});
+                {std::make_unique<EnvironmentCube>(std::move(sight_cube).value()), group.centre});
             for (const std::size_t i : group.stones) r.sight_of_[i] = g;
         }
         auto updated = r.update_ring_cube();
@@ -176,13 +174,12 @@ void FrameRenderer::set_sight(StoneFrame& frame, std::size_t i) const {
     if (sight_cubes_.empty()) {
         frame.environment = environment_cube_.get();
         frame.cube_half_mm = 0.0;
-        frame.cube_centre_mm = glm::dvec3(0.0);
         return;
     }
-    const SightCube& sight = sight_cubes_[sight_of_[i]];
-    frame.environment = sight.cube.get();
-    frame.cube_half_mm = sight.half_mm;
-    frame.cube_centre_mm = sight.centre;
+    frame.environment = sight_cubes_[sight_of_[i]].cube.get();
+    // A piece's cubes by direction (0: at infinity); a loose stone's with parallax, its faces
+    // about as far as the ring's radius.
+    frame.cube_half_mm = setup_.piece != nullptr ? 0.0 : ring_radius_mm_;
 }
 
 Result<bool> FrameRenderer::set_lights(const std::vector<Light>& lights) {

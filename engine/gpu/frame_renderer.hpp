@@ -96,7 +96,6 @@ class FrameRenderer {
     struct SightCube {
         std::unique_ptr<EnvironmentCube> cube;
         glm::dvec3 centre{0.0};
-        double half_mm = 0.0;  // the parallax box's half side about the centre
     };
     std::vector<SightCube> sight_cubes_;
     std::vector<std::size_t> sight_of_;  // each stone's cube (index into sight_cubes_)
@@ -112,6 +111,7 @@ class FrameRenderer {
     std::unique_ptr<RingRenderer> ring_;
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
+    double ring_radius_mm_ = 0.0;           // the metal's, about the centre
     glm::dvec3 box_lo_{0.0}, box_hi_{0.0};  // about every stone and the metal (cover())
 };
 

@@ -124,7 +124,6 @@ SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& fr
     glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
     program.set("u_environment", unit);
     program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
-    program.set("u_cube_centre", glm::vec3(frame.cube_centre_mm));
     program.set("u_frame_rotation", glm::mat3(frame.placement.rotation));
     program.set("u_frame_origin", glm::vec3(frame.placement.position));
     const ShadingSettings& s = frame.shading;

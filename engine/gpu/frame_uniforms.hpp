@@ -39,8 +39,6 @@ struct StoneFrame {
     Placement placement{};
     // What this frame of a still view traces differently (HdrPicture::still_frame()).
     StillFrame still{};
-    // Where the cube was seen from, in the piece's frame (the centre of the stone's group).
-    glm::dvec3 cube_centre_mm{0.0};
 };
 
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).

@@ -1,6 +1,7 @@
 #include "gpu/ring_renderer.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -9,6 +10,7 @@
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "optics/microfacet.hpp"
 #include "render/lights.hpp"
 
 namespace gem::gpu {
@@ -66,7 +68,7 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
     RingRenderer r(std::move(ring), std::move(background).value(),
                    std::move(metal_environment).value());
     r.f0_ = mesh.f0;
-    r.roughness_ = mesh.roughness;
+    r.roughness_ = std::clamp(mesh.roughness, 0.0f, 1.0f);
     r.radius_mm_ = mesh.radius_mm();
     r.closed_ = mesh.closed;
     r.index_count_ = static_cast<GLsizei>(mesh.indices.size());
@@ -100,8 +102,13 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
     ring.set("u_eye", eye);
     ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
     ring.set("u_f0", f0_);
+    // Constant over the mesh: the alphas of ring.frag's lobes and a light lobe's solid angle.
+    const double alpha = ggx_alpha(roughness_);
     ring.set("u_roughness", roughness_);
-    ring.set("u_h", static_cast<float>(lights.h));
+    ring.set("u_alpha", static_cast<float>(alpha));
+    ring.set("u_alpha_lit", static_cast<float>(std::sqrt(alpha * alpha + 1.0 / lights.h)));
+    ring.set("u_lobe_solid_angle",
+             static_cast<float>(2.0 * 3.14159265358979323846 / (lights.h + 1.0)));
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.filtered().texture());
     ring.set("u_environment", 0);
@@ -162,6 +169,7 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
     // bounding sphere; near at 1/1000 of far keeps 24-bit depth ample.
     const double far_mm = std::max(1.0, 1.01 * (radius_mm_ + glm::length(centre)));
     const double near_mm = 1e-3 * far_mm;
+    const glm::mat4 seen_from = glm::translate(glm::mat4(1.0f), -glm::vec3(centre));
     for (int face = 0; face < 6; ++face) {
         glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
                                GL_TEXTURE_CUBE_MAP_POSITIVE_X + face, target.texture(), 0);
@@ -193,7 +201,6 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         if (index_count_ > 0) {
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
-            const glm::mat4 seen_from = glm::translate(glm::mat4(1.0f), -glm::vec3(centre));
             draw_mesh(cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
                       false, lights_from, false);
         }

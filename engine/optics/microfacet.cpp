@@ -2,7 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdint>
+
+#include "util/radical_inverse.hpp"
 
 namespace gem {
 
@@ -10,16 +11,10 @@ namespace {
 
 constexpr double kPi = 3.14159265358979323846;
 
-// The i-th of n points of the Hammersley set: (i/n, radical inverse of i in base 2).
+// The i-th of n points of the Hammersley set: ((i + 0.5)/n, radical inverse of i in base 2).
 void hammersley(int i, int n, double& u1, double& u2) {
-    std::uint32_t bits = static_cast<std::uint32_t>(i);
-    bits = (bits << 16u) | (bits >> 16u);
-    bits = ((bits & 0x55555555u) << 1u) | ((bits & 0xAAAAAAAAu) >> 1u);
-    bits = ((bits & 0x33333333u) << 2u) | ((bits & 0xCCCCCCCCu) >> 2u);
-    bits = ((bits & 0x0F0F0F0Fu) << 4u) | ((bits & 0xF0F0F0F0u) >> 4u);
-    bits = ((bits & 0x00FF00FFu) << 8u) | ((bits & 0xFF00FF00u) >> 8u);
     u1 = (static_cast<double>(i) + 0.5) / n;
-    u2 = static_cast<double>(bits) * (1.0 / 4294967296.0);
+    u2 = radical_inverse(static_cast<unsigned>(i), 2);
 }
 
 }  // namespace
@@ -53,15 +48,18 @@ glm::dvec3 sample_ggx_normal(const glm::dvec3& n, double alpha, double u1, doubl
     return sin_t * std::cos(phi) * tx + sin_t * std::sin(phi) * ty + cos_t * n;
 }
 
-glm::dvec3 ggx_sample_weight(const glm::dvec3& f0, const glm::dvec3& n, const glm::dvec3& v,
-                             const glm::dvec3& m, double alpha) {
+GgxReflection ggx_reflect(const glm::dvec3& f0, const glm::dvec3& n, const glm::dvec3& v,
+                          const glm::dvec3& m, double alpha) {
+    GgxReflection r;
     const double v_dot_m = glm::dot(v, m);
-    if (v_dot_m <= 0.0) return glm::dvec3(0.0);
-    const glm::dvec3 l = 2.0 * v_dot_m * m - v;
-    const double n_dot_l = glm::dot(n, l), n_dot_v = glm::dot(n, v), n_dot_m = glm::dot(n, m);
-    if (n_dot_l <= 0.0 || n_dot_v <= 0.0 || n_dot_m <= 0.0) return glm::dvec3(0.0);
+    if (v_dot_m <= 0.0) return r;
+    r.direction = 2.0 * v_dot_m * m - v;
+    const double n_dot_l = glm::dot(n, r.direction), n_dot_v = glm::dot(n, v);
+    const double n_dot_m = glm::dot(n, m);
+    if (n_dot_l <= 0.0 || n_dot_v <= 0.0 || n_dot_m <= 0.0) return r;
     const double g = smith_g1(n_dot_v, alpha) * smith_g1(n_dot_l, alpha);
-    return schlick_fresnel(f0, v_dot_m) * (g * v_dot_m / (n_dot_v * n_dot_m));
+    r.weight = schlick_fresnel(f0, v_dot_m) * (g * v_dot_m / (n_dot_v * n_dot_m));
+    return r;
 }
 
 EnvironmentBrdf environment_brdf(double n_dot_v, double roughness, int samples) {
@@ -77,13 +75,13 @@ EnvironmentBrdf environment_brdf(double n_dot_v, double roughness, int samples) 
     const glm::dvec3 t1 =
         lensq > 0.0 ? glm::dvec3(-vh.y, vh.x, 0.0) / std::sqrt(lensq) : glm::dvec3(1, 0, 0);
     const glm::dvec3 t2 = glm::cross(vh, t1);
+    const double blend = 0.5 * (1.0 + vh.z);
     EnvironmentBrdf sum;
     for (int i = 0; i < samples; ++i) {
         double u1 = 0.0, u2 = 0.0;
         hammersley(i, samples, u1, u2);
         const double r = std::sqrt(u1), phi = 2.0 * kPi * u2;
         const double p1 = r * std::cos(phi);
-        const double blend = 0.5 * (1.0 + vh.z);
         const double p2 = (1.0 - blend) * std::sqrt(1.0 - p1 * p1) + blend * r * std::sin(phi);
         const glm::dvec3 nh =
             p1 * t1 + p2 * t2 + std::sqrt(std::max(0.0, 1.0 - p1 * p1 - p2 * p2)) * vh;

@@ -32,10 +32,15 @@ glm::dvec3 schlick_fresnel(const glm::dvec3& f0, double cos_theta);
 // A microfacet normal drawn from D(m)(n·m) about n (Walter eq. 35-36) for uniform u1, u2.
 glm::dvec3 sample_ggx_normal(const glm::dvec3& n, double alpha, double u1, double u2);
 
-// The weight of a reflected direction l = reflect(-v, m) drawn through sample_ggx_normal:
-// F G |v·m| / (|n·v| |n·m|) (Walter eq. 38); zero where l falls below the surface.
-glm::dvec3 ggx_sample_weight(const glm::dvec3& f0, const glm::dvec3& n, const glm::dvec3& v,
-                             const glm::dvec3& m, double alpha);
+// The direction l = reflect(-v, m) for a normal m drawn through sample_ggx_normal, and its
+// weight F G |v·m| / (|n·v| |n·m|) (Walter eq. 38); the weight is zero where l falls below the
+// surface.
+struct GgxReflection {
+    glm::dvec3 direction{0.0};
+    glm::dvec3 weight{0.0};
+};
+GgxReflection ggx_reflect(const glm::dvec3& f0, const glm::dvec3& n, const glm::dvec3& v,
+                          const glm::dvec3& m, double alpha);
 
 // The environment BRDF: reflectance of a uniform white environment is f0·scale + bias.
 struct EnvironmentBrdf {

@@ -44,7 +44,7 @@ std::string turn_table_up(Piece& piece) {
     double largest = 0.0, second = 0.0;
     glm::dvec3 table(0.0);
     for (const Facet& f : hero.facets) {
-        const double a = 0.5 * glm::length(newell_normal(hero.vertices, f.loop));
+        const double a = loop_area(hero.vertices, f.loop);
         if (a > largest) {
             second = largest;
             largest = a;
@@ -90,10 +90,11 @@ std::string turn_table_up(Piece& piece) {
 }
 
 // The centre stone at the piece's origin, as the settings place it (settings.hpp): CAD puts
-// the origin at the finger's centre, and the GPU's virtual cube, which holds what the stones
-// see of the metal, is taken from the origin (frame_renderer.hpp); from the finger's centre it
-// sees the inside of the shank, and a stone 13 mm above it came out black. A file whose origin
-// lies within the centre stone (this project's own, a loose stone's) keeps it.
+// the origin at the finger's centre, and the view orbits the origin, so a ring from CAD turned
+// about the finger with its stone 13 mm off the picture's centre (the GPU's virtual cube was
+// then also taken from the origin, where the stone came out black; each stone now has its own,
+// piece/sight_groups.hpp). A file whose origin lies within the centre stone (this project's
+// own, a loose stone's) keeps it.
 void centre_on_the_centre_stone(Piece& piece) {
     if (piece.stones.empty()) return;
     const glm::dvec3 centre = piece.stones.front().placement.position;

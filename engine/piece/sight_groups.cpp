@@ -1,9 +1,8 @@
 #include "piece/sight_groups.hpp"
 
 #include <algorithm>
-#include <numeric>
-
 #include <limits>
+#include <numeric>
 
 namespace gem {
 
@@ -13,31 +12,25 @@ namespace {
 constexpr double kOwnShare = 0.6;
 constexpr std::size_t kOwnAtMost = 4;
 
+// Each stone, largest first, alone or joining the first shared group whose first stone lies
+// within `join_factor` of that stone's radius.
 std::vector<SightGroup> grouped(const std::vector<glm::dvec3>& centre,
                                 const std::vector<double>& radius,
                                 const std::vector<std::size_t>& order, bool own_allowed,
                                 double join_factor) {
     const double largest = radius[order.front()];
     std::vector<SightGroup> groups;
-    std::vector<std::size_t> seed;  // each group's first stone
     for (const std::size_t i : order) {
-        const glm::dvec3 c = centre[i];
-        if (own_allowed && radius[i] >= kOwnShare * largest) {
-            groups.push_back({c, radius[i], true, {i}});
-            seed.push_back(i);
-            continue;
-        }
-        bool joined = false;
-        for (std::size_t g = 0; g < groups.size() && !joined; ++g) {
-            if (groups[g].own) continue;
-            if (glm::length(c - centre[seed[g]]) <= join_factor * radius[seed[g]]) {
-                groups[g].stones.push_back(i);
-                joined = true;
-            }
-        }
-        if (!joined) {
-            groups.push_back({c, radius[i], false, {i}});
-            seed.push_back(i);
+        const bool own = own_allowed && radius[i] >= kOwnShare * largest;
+        auto joins = [&](const SightGroup& g) {
+            const std::size_t seed = g.stones.front();
+            return !g.own && glm::length(centre[i] - centre[seed]) <= join_factor * radius[seed];
+        };
+        const auto group = own ? groups.end() : std::find_if(groups.begin(), groups.end(), joins);
+        if (group != groups.end()) {
+            group->stones.push_back(i);
+        } else {
+            groups.push_back({centre[i], own, {i}});
         }
     }
     for (SightGroup& g : groups) {
@@ -46,17 +39,11 @@ std::vector<SightGroup> grouped(const std::vector<glm::dvec3>& centre,
         // Seen from the member nearest the middle: a stone's centre lies inside the stone,
         // where the middle of an arc of stones may lie inside the metal between them.
         const glm::dvec3 middle = sum / static_cast<double>(g.stones.size());
-        std::size_t nearest = g.stones.front();
-        for (const std::size_t i : g.stones) {
-            if (glm::length(centre[i] - middle) < glm::length(centre[nearest] - middle)) {
-                nearest = i;
-            }
-        }
-        g.centre = centre[nearest];
-        g.reach_mm = 0.0;
-        for (const std::size_t i : g.stones) {
-            g.reach_mm = std::max(g.reach_mm, glm::length(centre[i] - g.centre) + radius[i]);
-        }
+        const auto nearest =
+            std::min_element(g.stones.begin(), g.stones.end(), [&](std::size_t a, std::size_t b) {
+                return glm::length(centre[a] - middle) < glm::length(centre[b] - middle);
+            });
+        g.centre = centre[*nearest];
     }
     return groups;
 }

@@ -17,7 +17,6 @@ namespace gem {
 
 struct SightGroup {
     glm::dvec3 centre{0.0};           // where the group's cube is seen from: a member's middle (mm)
-    double reach_mm = 0.0;            // the farthest point of a member from the centre
     bool own = false;                 // one large stone alone
     std::vector<std::size_t> stones;  // indices into Piece::stones
 };

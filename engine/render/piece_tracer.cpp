@@ -203,9 +203,10 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     const double alpha = ggx_alpha(piece_.metal.roughness);
     const double u1 = uniform(scratch.random), u2 = uniform(scratch.random);
     const glm::dvec3 m = sample_ggx_normal(n, alpha, u1, u2);
-    const glm::dvec3 weight = ggx_sample_weight(glm::dvec3(piece_.metal.f0), n, v, m, alpha);
-    if (weight == glm::dvec3(0.0)) return glm::dvec3(0.0);
-    const glm::dvec3 l = 2.0 * glm::dot(v, m) * m - v;
+    const GgxReflection reflected = ggx_reflect(glm::dvec3(piece_.metal.f0), n, v, m, alpha);
+    if (reflected.weight == glm::dvec3(0.0)) return glm::dvec3(0.0);
+    const glm::dvec3& l = reflected.direction;
+    const glm::dvec3& weight = reflected.weight;
     return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), 1.0, weight, iors,
                   pass - 1, share, scratch);
 }

@@ -123,8 +123,9 @@ TEST(Microfacet, TheSampleWeightsAverageToTheReflectance) {
     };
     for (int i = 0; i < kDraws; ++i) {
         const double u1 = next(), u2 = next();
-        sum += ggx_sample_weight(f0, n, v, sample_ggx_normal(n, ggx_alpha(roughness), u1, u2),
-                                 ggx_alpha(roughness));
+        sum += ggx_reflect(f0, n, v, sample_ggx_normal(n, ggx_alpha(roughness), u1, u2),
+                           ggx_alpha(roughness))
+                   .weight;
     }
     for (int c = 0; c < 3; ++c) {
         EXPECT_NEAR(sum[c] / kDraws, quadrature_reflectance(n_dot_v, roughness, f0[c]), 3e-3) << c;

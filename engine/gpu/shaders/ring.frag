@@ -26,7 +26,9 @@ uniform vec3 u_eye;             // eye position; a direction toward the eye when
 uniform int u_eye_at_infinity;  // 1: orthographic camera
 uniform vec3 u_f0;
 uniform float u_roughness;
-uniform float u_h;  // the lights' lobe exponent
+uniform float u_alpha;             // GGX alpha of the roughness (optics/microfacet.hpp)
+uniform float u_alpha_lit;         // ... widened by the lights' lobe
+uniform float u_lobe_solid_angle;  // of a light's lobe, 2π/(h+1)
 uniform vec4 u_light_position[MAX_LIGHTS];  // w = 1: point light (mm); w = 0: direction to it
 uniform vec3 u_light_colour[MAX_LIGHTS];
 
@@ -49,14 +51,10 @@ void main() {
     vec3 n = normalize(v_normal);
     if (!gl_FrontFacing) n = -n;  // a triangle seen from inside (open or badly wound meshes)
     vec3 v = u_eye_at_infinity == 1 ? normalize(u_eye) : normalize(u_eye - v_position);
-    float roughness = clamp(u_roughness, 0.0, 1.0);
-    float a = max(roughness * roughness, 1e-4);
     // Interpolated normals may face slightly away from the eye at silhouettes.
     float n_v = max(dot(n, v), 1e-4);
 
     vec3 colour = vec3(0.0);
-    float lobe_solid_angle = 2.0 * kPi / (u_h + 1.0);
-    float a_lit = sqrt(a * a + 1.0 / u_h);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
         vec4 lp = u_light_position[i];
         vec3 l = normalize(lp.w > 0.5 ? lp.xyz - v_position : lp.xyz);
@@ -65,12 +63,12 @@ void main() {
         vec3 h = normalize(l + v);
         float n_h = max(dot(n, h), 0.0);
         vec3 f = fresnel_schlick(u_f0, dot(v, h));
-        float g = smith_g1(n_v, a) * smith_g1(n_l, a);
-        vec3 brdf = f * (ggx(n_h, a_lit) * g / (4.0 * n_l * n_v));
-        colour += u_light_colour[i] * lobe_solid_angle * brdf * n_l;
+        float g = smith_g1(n_v, u_alpha) * smith_g1(n_l, u_alpha);
+        vec3 brdf = f * (ggx(n_h, u_alpha_lit) * g / (4.0 * n_l * n_v));
+        colour += u_light_colour[i] * u_lobe_solid_angle * brdf * n_l;
     }
     vec3 r = reflect(-v, n);
-    vec2 scale_bias = texture(u_environment_brdf, vec2(n_v, roughness)).rg;
+    vec2 scale_bias = texture(u_environment_brdf, vec2(n_v, u_roughness)).rg;
     colour += textureLod(u_environment, r, 0.0).rgb * (u_f0 * scale_bias.x + scale_bias.y);
     o_colour = vec4(colour, 1.0);
 }

@@ -16,8 +16,7 @@
 #endif
 
 uniform samplerCube u_environment;
-uniform float u_cube_half_mm;  // the virtual cube's half side about where it was seen from
-uniform vec3 u_cube_centre;    // where it was seen from, in the piece's frame
+uniform float u_cube_half_mm;  // the virtual cube's half side about the piece's centre
 // The stone's frame in the piece's, where the cube stands (identity for a loose stone).
 uniform mat3 u_frame_rotation;
 uniform vec3 u_frame_origin;
@@ -40,15 +39,16 @@ const int kTexWidth = 1024;  // texel_array.hpp: kTextureWidth
 ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
 
 // Where the ray from p along d (stone frame) meets the virtual cube, as a cube-map lookup
-// direction: the six images were taken from the cube's centre (the stone's, or its group's),
-// so the exit point matters, not only d. The sharp level always: neighbouring pixels' rays diverge inside a stone, and a
-// level chosen from their derivatives would blur the sparkle.
+// direction: a loose stone's six images were taken from its centre, so the exit point matters,
+// not only d (a piece's cubes are looked up by direction: CUBE_AT_INFINITY). The sharp level
+// always: neighbouring pixels' rays diverge inside a stone, and a level chosen from their
+// derivatives would blur the sparkle.
 vec3 environment(vec3 p_stone, vec3 d_stone) {
     vec3 d = u_frame_rotation * d_stone;
 #ifdef CUBE_AT_INFINITY
     return textureLod(u_environment, d, 0.0).rgb;
 #else
-    vec3 p = u_frame_rotation * p_stone + u_frame_origin - u_cube_centre;
+    vec3 p = u_frame_rotation * p_stone + u_frame_origin;
     vec3 far_side = (sign(d) * u_cube_half_mm - p) / d;  // per-axis distance to the far face
     float t = min(far_side.x, min(far_side.y, far_side.z));
     return textureLod(u_environment, p + max(t, 0.0) * d, 0.0).rgb;
