@@ -14,14 +14,10 @@ namespace {
 // The trust catalogues are checked with: the keys the config trusts now, or those kept with the
 // last good config when it is set aside (settings/config_fallback.hpp).
 CatalogueTrust trust_of(const ResolvedConfig& resolved, std::vector<std::string>& problems) {
-    std::vector<TrustedKeyText> texts;
-    for (const KeptKey& key : resolved.trusted_keys) {
-        texts.push_back(TrustedKeyText{key.file.string(), key.text});
-    }
-    CatalogueTrust trust = parse_trust(resolved.signatures_required, texts, problems);
+    CatalogueTrust trust =
+        trust_of_keys(resolved.signatures_required, resolved.trusted_keys, problems);
     for (const std::string& problem : problems) {
-        log_error("trusted key left out: " + problem +
-                  "; catalogues signed with it will be refused");
+        log_error(problem + "; catalogues signed with it will be refused");
     }
     if (!trust.required) {
         log_warning(
@@ -65,6 +61,16 @@ void keep_if_good(const ResolvedConfig& resolved, bool keys_parsed,
 }
 
 }  // namespace
+
+CatalogueTrust trust_of_keys(bool required, const std::vector<KeptKey>& keys,
+                             std::vector<std::string>& problems) {
+    std::vector<TrustedKeyText> texts;
+    for (const KeptKey& key : keys) texts.push_back(TrustedKeyText{key.file.string(), key.text});
+    std::vector<std::string> unparsed;
+    CatalogueTrust trust = parse_trust(required, texts, unparsed);
+    for (const std::string& why : unparsed) problems.push_back("trusted key left out: " + why);
+    return trust;
+}
 
 // --state-dir, else systemd's StateDirectory= ($STATE_DIRECTORY, systemd.exec(5): "a
 // colon-separated list" of the unit's state directories; this unit has one), else none.

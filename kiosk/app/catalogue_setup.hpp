@@ -5,12 +5,19 @@
 // last good config is kept.
 
 #include <filesystem>
+#include <string>
+#include <vector>
 
 #include "app/kiosk_run.hpp"
 #include "catalogue/catalogue.hpp"
 #include "settings/config_fallback.hpp"
 
 namespace gem::kiosk {
+
+// The trust of kept or freshly read key texts (settings/last_good_config.hpp): each that does
+// not parse as a minisign key adds "trusted key left out: FILE: why" to `problems`.
+CatalogueTrust trust_of_keys(bool required, const std::vector<KeptKey>& keys,
+                             std::vector<std::string>& problems);
 
 // --state-dir, else systemd's StateDirectory= ($STATE_DIRECTORY), else none (empty).
 std::filesystem::path started_state_dir(const KioskRun& run);

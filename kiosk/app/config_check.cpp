@@ -3,8 +3,7 @@
 #include <string>
 #include <vector>
 
-#include "catalogue/catalogue_signature.hpp"
-#include "settings/config_fallback.hpp"
+#include "app/catalogue_setup.hpp"
 
 namespace gem::kiosk {
 
@@ -14,12 +13,7 @@ int check_config(const std::filesystem::path& file, std::ostream& out) {
     if (load.parsed) {
         const std::vector<KeptKey> keys =
             read_trusted_key_files(load.config.catalogue.trusted_keys, problems);
-        std::vector<TrustedKeyText> texts;
-        for (const KeptKey& key : keys)
-            texts.push_back(TrustedKeyText{key.file.string(), key.text});
-        std::vector<std::string> unparsed;
-        (void)parse_trust(true, texts, unparsed);
-        for (const std::string& why : unparsed) problems.push_back("trusted key left out: " + why);
+        (void)trust_of_keys(true, keys, problems);
     }
     for (const std::string& problem : problems) out << problem << "\n";
     if (problems.empty()) {

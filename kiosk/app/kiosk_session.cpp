@@ -29,6 +29,13 @@ namespace {
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
 
+// What validation said of a catalogue about to be shown: stones left out, notes, warnings.
+void log_catalogue_lines(const Catalogue& catalogue) {
+    for (const std::string& why : catalogue.left_out) log_error(why);
+    for (const std::string& note : catalogue.notes) log_info(note);
+    for (const std::string& warning : catalogue.warnings) log_warning(warning);
+}
+
 }  // namespace
 
 Result<std::unique_ptr<KioskSession>> KioskSession::make(const KioskRun& run) {
@@ -77,9 +84,7 @@ Result<bool> KioskSession::configure() {
         log_info("catalogue '" + startup.value().name + "' with " +
                  std::to_string(startup.value().stones.size()) + " stones from " +
                  startup.value().directory.string());
-        for (const std::string& why : startup.value().left_out) log_error(why);
-        for (const std::string& note : startup.value().notes) log_info(note);
-        for (const std::string& warning : startup.value().warnings) log_warning(warning);
+        log_catalogue_lines(startup.value());
         selection_->set_catalogue(startup.value());
         catalogue_ = std::move(startup).value();
     } else {
@@ -247,9 +252,7 @@ void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
                std::to_string(catalogue.stones.size()) + " stones" +
                (catalogue.signed_by.empty() ? "" : ", signed by key " + catalogue.signed_by) +
                ") from " + catalogue.directory.string());
-    for (const std::string& why : catalogue.left_out) log_error(why);
-    for (const std::string& note : catalogue.notes) log_info(note);
-    for (const std::string& warning : catalogue.warnings) log_warning(warning);
+    log_catalogue_lines(catalogue);
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
     }

@@ -216,7 +216,9 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
                                std::stop_token stop) {
     const std::string from = " (from " + source.string() + ")";
     if (!options_.deliveries_refused_because.empty()) {
-        handled_[source] = {fingerprint.hash, Outcome::held};
+        // Handled as refused for this fingerprint, but neither set aside nor remembered: a kiosk
+        // started on a good config looks at it again.
+        handled_[source] = {fingerprint.hash, Outcome::rejected};
         log_error("catalogue at " + source.string() + " not installed: " +
                   options_.deliveries_refused_because + "; it is left where it is");
         ++rejections_;

@@ -61,8 +61,7 @@ class CatalogueWatcher {
     Counters counters() const;
 
   private:
-    // held: not looked at, deliveries being refused (CatalogueOptions); said once.
-    enum class Outcome { rejected, copy_failed, installed, held };
+    enum class Outcome { rejected, copy_failed, installed };
     struct Seen {
         DirectoryFingerprint fingerprint;
         std::chrono::steady_clock::time_point since;  // when this fingerprint was first seen

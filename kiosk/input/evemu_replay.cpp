@@ -9,10 +9,11 @@
 #include <cstring>
 #include <filesystem>
 #include <fstream>
-#include <iterator>
 #include <limits>
 #include <memory>
 #include <string_view>
+
+#include "import/import_text.hpp"
 
 namespace gem::kiosk {
 
@@ -67,13 +68,12 @@ bool has_a_first_line(std::string_view text) {
 }
 
 Result<EvemuDevice> read_description(const std::string& path) {
-    std::ifstream in(path, std::ios::binary);
-    if (!in) return Error{"evemu description " + path + ": " + std::strerror(errno)};
-    std::string text((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    auto text = import::read_whole_file(path);
+    if (!text) return Error{"evemu description " + text.error()};
     const std::string invalid =
         "evemu description " + path + ": not a valid evemu device description";
-    if (!has_a_first_line(text)) return Error{invalid};
-    File file(fmemopen(text.data(), text.size(), "r"));
+    if (!has_a_first_line(text.value())) return Error{invalid};
+    File file(fmemopen(text.value().data(), text.value().size(), "r"));
     EvemuDevice device(evemu_new(nullptr));
     if (!file || !device || evemu_read(device.get(), file.get()) <= 0) return Error{invalid};
     return device;

@@ -1,5 +1,7 @@
 #include "settings/config_fallback.hpp"
 
+#include <cstdint>
+
 #include "import/import_text.hpp"
 
 namespace gem::kiosk {
@@ -60,12 +62,16 @@ std::vector<KeptKey> read_trusted_key_files(const std::vector<fs::path>& files,
         // the start.
         std::error_code ec;
         const fs::file_status status = fs::status(file, ec);
-        Result<std::string> text = Error{file.string() + ": not a key file (too large)"};
+        const bool regular = !ec && fs::is_regular_file(status);
+        const std::uintmax_t size = regular ? fs::file_size(file, ec) : 0;
+        Result<std::string> text = Error{""};
         if (ec) {
             text = Error{file.string() + ": cannot open (" + ec.message() + ")"};
-        } else if (!fs::is_regular_file(status)) {
+        } else if (!regular) {
             text = Error{file.string() + ": not a regular file"};
-        } else if (fs::file_size(file, ec) <= kLargestKeyFile && !ec) {
+        } else if (size > kLargestKeyFile) {
+            text = Error{file.string() + ": not a key file (too large)"};
+        } else {
             text = import::read_whole_file(file);
         }
         if (text) {

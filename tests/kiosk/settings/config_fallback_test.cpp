@@ -221,19 +221,22 @@ TEST(ConfigFallback, AMisspeltCatalogueTableDoesNotDropTheKeys) {
 
 TEST(ConfigFallback, AKeyFileThatCannotBeReadIsNamedAndSignaturesStayRequired) {
     const fs::path dir = fresh_dir("fallback-key-unreadable");
-    write_text(
-        dir / "gemkiosk.toml",
-        "[catalogue]\ntrusted_keys = [\"chain.pub\", \"/dev/zero\", \"" + dir.string() + "\"]\n");
+    write_text(dir / "huge.pub", std::string(5000, 'R'));  // a key file is two short lines
+    write_text(dir / "gemkiosk.toml",
+               "[catalogue]\ntrusted_keys = [\"chain.pub\", \"/dev/zero\", \"" + dir.string() +
+                   "\", \"huge.pub\"]\n");
     const ResolvedConfig resolved = resolve_config(dir / "gemkiosk.toml", dir / "state");
     EXPECT_TRUE(resolved.signatures_required);
     EXPECT_TRUE(resolved.trusted_keys.empty());
     EXPECT_FALSE(resolved.good.has_value());
-    ASSERT_EQ(resolved.errors.size(), 3u);
+    ASSERT_EQ(resolved.errors.size(), 4u);
     EXPECT_EQ(resolved.errors[0], "trusted key left out: " + (dir / "chain.pub").string() +
                                       ": cannot open (No such file or directory); catalogues "
                                       "signed with it will be refused");
     EXPECT_NE(resolved.errors[1].find("/dev/zero: not a regular file"), std::string::npos);
     EXPECT_NE(resolved.errors[2].find(dir.string() + ": not a regular file"), std::string::npos);
+    EXPECT_NE(resolved.errors[3].find("huge.pub: not a key file (too large)"), std::string::npos)
+        << resolved.errors[3];
 }
 
 }  // namespace
