@@ -195,9 +195,13 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0.0, 1.0));
     app.add_option("--still-frames", o.gpu.still_frames,
                    "GPU, one picture: average this many frames a sub-pixel apart")
-        ->check(CLI::Range(1, 256));
+        ->check(CLI::Range(1, 1024));
     app.add_option("--still-depth", o.gpu.still_depth,
                    "trace: the depth those frames follow where deeper than --depth")
+        ->check(CLI::Range(0, 64));
+    app.add_option("--still-depth-max", o.gpu.still_depth_max,
+                   "trace: those frames deeper as they accumulate, to this (the kiosk's "
+                   "picture.still_depth_max)")
         ->check(CLI::Range(0, 64));
     CLI11_PARSE(app, argc, argv);
     o.gpu.display.curve = *gem::tone_curve_named(o.tone);

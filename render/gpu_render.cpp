@@ -154,7 +154,8 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
                                       .glare = o.glare,
                                       .still_frames = o.still_frames,
                                       .spectral = o.fire == "spectral",
-                                      .still_depth = o.still_depth});
+                                      .still_depth = o.still_depth,
+                                      .still_depth_max = o.still_depth_max});
     if (!hdr) return fail(hdr.error());
     std::printf("gemrender: picture %s\n", hdr.value().describe().c_str());
 

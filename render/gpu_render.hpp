@@ -31,6 +31,7 @@ struct GpuRenderOptions {
     int still_frames = 1;          // one picture: frames a sub-pixel apart averaged, as a still
                                    // kiosk view is
     int still_depth = 0;           // trace: those frames' depth where deeper than the scene's
+    int still_depth_max = 0;       // ... deeper as they accumulate, to this (StillSchedule)
     const Piece* piece = nullptr;  // trace, phong: the piece instead of the scene's stone and a
                                    // ring, framed by its bounding sphere as the CPU frames it
 };

@@ -42,6 +42,11 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     if (!finish) return Error{finish.error()};
     HdrPicture p(std::move(finish).value());
     p.options_ = options;
+    p.schedule_ = StillSchedule({.frames = options.still_frames,
+                                 .depth = options.still_depth,
+                                 .depth_max = options.still_depth_max,
+                                 .seconds = options.still_seconds,
+                                 .frame_ms = options.still_frame_ms});
     p.width_ = width;
     p.height_ = height;
     while (glGetError() != GL_NO_ERROR) {
@@ -117,37 +122,41 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     return p;
 }
 
-void HdrPicture::begin_frame(bool still) {
-    if (!accumulate_ || !still) {
-        still_index_ = -1;
-        return;
-    }
-    still_index_ = std::min(still_index_ + 1, options_.still_frames);
+void HdrPicture::begin_frame(bool still, double now_s) {
+    schedule_.begin_frame(still && accumulate_.has_value(), now_s);
+}
+
+bool HdrPicture::accumulating() const {
+    return schedule_.index() >= 0 && !schedule_.settled();
 }
 
 StillFrame HdrPicture::still_frame() const {
     StillFrame still;
-    if (still_index_ < 0 || still_index_ >= options_.still_frames) return still;
-    if (spectrum_) still.wavelengths = &spectrum_->frame(still_index_);
-    still.depth = options_.still_depth;
+    if (!accumulating()) return still;
+    if (spectrum_) still.wavelengths = &spectrum_->frame(schedule_.index());
+    still.depth = schedule_.depth();
     return still;
 }
 
 bool HdrPicture::settled() const {
-    return accumulate_ && still_index_ >= options_.still_frames;
+    return accumulate_ && schedule_.settled();
+}
+
+int HdrPicture::still_frames_drawn() const {
+    return schedule_.index() + 1;
 }
 
 glm::dvec2 HdrPicture::jitter_ndc() const {
     // The first frame of a still view is the moving view's own (no offset): the picture does
     // not jump when a turn stops. Then Halton (2, 3), centred on the pixel.
-    if (still_index_ <= 0) return glm::dvec2(0.0);
-    const auto i = static_cast<unsigned>(still_index_);
+    if (schedule_.index() <= 0) return glm::dvec2(0.0);
+    const auto i = static_cast<unsigned>(schedule_.index());
     const glm::dvec2 offset_px(radical_inverse(i, 2) - 0.5, radical_inverse(i, 3) - 0.5);
     return offset_px * glm::dvec2(2.0 / width_, 2.0 / height_);
 }
 
 bool HdrPicture::multisampled_frame() const {
-    return multisampled_ && still_index_ <= 0;
+    return multisampled_ && schedule_.index() <= 0;
 }
 
 void HdrPicture::forget_all() {
@@ -209,14 +218,14 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
                           GL_NEAREST);
     }
     GLuint scene = resolved_.get();
-    if (still_index_ >= 0 && still_index_ < options_.still_frames) {
+    if (accumulating()) {
         // The running mean: the k-th frame (from 0) has weight 1 / (k + 1).
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
         scissor(mean_damage_.rewrite(content, whole));
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
-        glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(still_index_ + 1));
+        glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(schedule_.index() + 1));
         glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
         accumulate_->use();
         glActiveTexture(GL_TEXTURE0);
@@ -226,7 +235,7 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         glDrawArrays(GL_TRIANGLES, 0, 3);
         glDisable(GL_BLEND);
     }
-    if (still_index_ >= 0) scene = mean_.get();
+    if (schedule_.index() >= 0) scene = mean_.get();
     lap(times ? &times->resolve_ms : nullptr);
     const bool glare = glare_ && options_.glare > 0.0;
     if (glare) {
@@ -273,15 +282,23 @@ std::string HdrPicture::describe() const {
                                     : " (mean in RGBA16F, no float blending: it rounds past " +
                                           std::to_string(kHalfFloatMeanFrames) + " frames)";
     }
-    char line[320];
+    std::string depth;
+    if (accumulate_ && options_.still_depth > 0) {
+        depth = ", traced to depth " + std::to_string(options_.still_depth);
+        if (options_.still_depth_max > options_.still_depth) {
+            depth += " and deeper to " + std::to_string(options_.still_depth_max);
+        }
+    }
+    if (accumulate_ && options_.still_seconds > 0.0) {
+        depth += ", for at most " + std::to_string(options_.still_seconds).substr(0, 4) + " s";
+    }
+    char line[400];
     std::snprintf(
-        line, sizeof line, "%s, %d× MSAA, %d frames a still view%s%s%s, %s, %s at %+.1f EV",
+        line, sizeof line, "%s, %d× MSAA, %s%d frames a still view%s%s%s, %s, %s at %+.1f EV",
         high_range_ ? "RGBA16F" : "8-bit sRGB (no float target: highlights clip)", samples_,
+        accumulate_ && options_.still_seconds > 0.0 ? "up to " : "",
         accumulate_ ? options_.still_frames : 1, mean.c_str(),
-        spectrum_ ? ", each its own wavelengths" : "",
-        accumulate_ && options_.still_depth > 0
-            ? (", traced to depth " + std::to_string(options_.still_depth)).c_str()
-            : "",
+        spectrum_ ? ", each its own wavelengths" : "", depth.c_str(),
         glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
                                           " over " + std::to_string(glare_->levels()) + " levels")
                                              .c_str()

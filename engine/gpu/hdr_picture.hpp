@@ -14,12 +14,13 @@
 // Halton (2, 3) sequence), so edges inside the stone, where the rays' paths through it change,
 // are sampled several times a pixel as the CPU reference samples them; after its first they
 // are drawn without MSAA (point samples, multisampled_frame()). Any motion restarts the mean;
-// after `still_frames` frames more drawing changes nothing (settled()).
+// after `still_frames` frames, or `still_seconds`, more drawing changes nothing (settled()).
 //
 // With spectral fire (PictureOptions::spectral) each still frame also traces its own
 // wavelengths, one per colour channel (still_frame(), optics/spectrum.hpp: StillSpectrum), so
 // that the mean of a still view's frames is each channel's spectral integral; and they may
-// trace deeper than the moving frames (still_depth).
+// trace deeper than the moving frames (still_depth), deeper still as they accumulate, for as
+// long as the view is given (still_schedule.hpp).
 //
 // Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass after
 // the scene runs only where the picture changes: around what the piece covers in this frame and
@@ -39,6 +40,7 @@
 #include "gpu/program.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/scene_cover.hpp"
+#include "gpu/still_schedule.hpp"
 #include "optics/spectrum.hpp"
 #include "render/tone_map.hpp"
 #include "util/result.hpp"
@@ -58,6 +60,13 @@ struct PictureOptions {
     // still view's cost is latency, not frame rate (it stops once settled), and the light a
     // ray still carries when its depth runs out has no cheaper stand-in (docs/accuracy.md).
     int still_depth = 0;
+    // The depth still frames come to as they accumulate (StillSchedule: doubled each time the
+    // frames double); at most still_depth: never deeper than it.
+    int still_depth_max = 0;
+    // How long a still view is refined after it stopped (0: until its still_frames), and how
+    // long a deeper still frame may keep a touch waiting (0: any): StillScheduleOptions.
+    double still_seconds = 0.0;
+    double still_frame_ms = 0.0;
 };
 
 // Each pass's time, measured with glFinish between passes (only when asked: it stalls).
@@ -72,15 +81,22 @@ class HdrPicture {
     // Errors: a size outside the GPU's limits, no renderable colour format at all.
     static Result<HdrPicture> make(int width, int height, const PictureOptions& options);
 
-    // Before drawing each frame: `still` says its view is the last frame's. The camera of the
-    // frame should be moved by jitter_ndc() (CameraSettings::shift).
-    void begin_frame(bool still);
+    // Before drawing each frame: `still` says its view is the last frame's, `now_s` when it
+    // begins (a still view's time is counted from its first frame; any clock). The camera of
+    // the frame should be moved by jitter_ndc() (CameraSettings::shift).
+    void begin_frame(bool still, double now_s = 0.0);
+    // After drawing it: what it cost (ms), by which a still view's next frame may go deeper.
+    void frame_drawn(double ms) { schedule_.frame_drawn(ms); }
     glm::dvec2 jitter_ndc() const;
     // What this frame traces differently (FrameRenderer::render): a still frame's wavelengths,
     // when the picture is spectral, and its depth; a moving frame's defaults else.
     StillFrame still_frame() const;
-    // The still view has its still_frames frames: drawing it again changes nothing.
+    // The still view has its frames, or its time: drawing it again changes nothing.
     bool settled() const;
+    // The frames the still view's mean holds once this frame is drawn (0 while moving).
+    int still_frames_drawn() const;
+    // How this still view was refined: its time, its depths.
+    const StillSchedule& still_schedule() const { return schedule_; }
     // The picture is as good as this view gets: settled, or no averaging at all.
     bool refined() const { return !accumulate_ || settled(); }
     // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, for
@@ -118,6 +134,8 @@ class HdrPicture {
     // reference without MSAA, 0.93 with it (1.57 and 1.94 with spectral fire), and each frame
     // costs less (bench_still_picture --msaa).
     bool multisampled_frame() const;
+    // This frame is added to the still view's mean.
+    bool accumulating() const;
     // Every surface rewritten whole at its next frame.
     void forget_all();
 
@@ -140,7 +158,7 @@ class HdrPicture {
     Texture mean_;
     bool mean_high_precision_ = false;
     Framebuffer mean_framebuffer_;
-    int still_index_ = -1;  // this frame's place in the still view's mean; -1: moving
+    StillSchedule schedule_;  // this frame's place in the still view's mean, and its depth
     std::optional<StillSpectrum> spectrum_;
     std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;

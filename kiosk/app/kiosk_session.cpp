@@ -401,7 +401,7 @@ void KioskSession::apply_probe(double now_s) {
         std::snprintf(line, sizeof line,
                       "picture: MSAA and glare off: no method held the %.1f ms budget with them "
                       "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
-                      "averaged over %d frames",
+                      "averaged, over up to %d frames",
                       r.choice.budget_ms, chosen_name(*probe_with_extras_).c_str(),
                       chosen_ms(*probe_with_extras_), chosen_name(r).c_str(), chosen_ms(r),
                       r.picture.still_frames);
@@ -479,12 +479,14 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     const bool rebuilt = scene_stale_;
     if (scene_stale_) rebuild_scene(now_s);
 
-    // A still view is refined frame by frame (hdr_picture.hpp); once it has all its frames,
-    // and no cross-fade is drawn over it, the picture on screen is shown again undrawn.
+    // A still view is refined frame by frame (hdr_picture.hpp) for the time it is given; once
+    // it has all its frames or its time, and no cross-fade is drawn over it, the picture on
+    // screen is shown again undrawn.
     const ViewState view = gestures_->view();
     const bool still = !rebuilt && last_view_ && same_view(*last_view_, view);
     last_view_ = view;
-    scene_picture_->begin_frame(still);
+    scene_picture_->begin_frame(still, now_s);
+    log_still_view_settled();
     const bool fading = crossfade_->active(now_s);
     const bool redraw = !scene_picture_->settled() || fading || faded_last_frame_;
     faded_last_frame_ = fading;
@@ -536,6 +538,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         return std::optional<FrameRecord>(record);
     }
     record.draw_ms = (done_s - record.start_s) * 1000.0;
+    scene_picture_->frame_drawn(record.draw_ms);  // what a deeper still frame is judged by
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
     if (oldest_unshown_input_s_ >= 0.0) {
         record.latency_ms = (done_s - oldest_unshown_input_s_) * 1000.0;
@@ -572,6 +575,20 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     write_requested_snapshot();
     advance_probe(done_s);
     return std::optional<FrameRecord>(record);
+}
+
+void KioskSession::log_still_view_settled() {
+    if (!scene_picture_->settled()) {
+        still_view_logged_ = false;
+        return;
+    }
+    if (still_view_logged_) return;
+    still_view_logged_ = true;
+    const gpu::StillSchedule& s = scene_picture_->still_schedule();
+    char line[160];
+    std::snprintf(line, sizeof line, "still view refined: %d frames in %.1f s, to depth %d",
+                  scene_picture_->still_frames_drawn(), s.settled_after_s(), s.deepest());
+    log_info(line);
 }
 
 void KioskSession::start_replay(double now_s) {

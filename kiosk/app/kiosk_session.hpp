@@ -77,6 +77,8 @@ class KioskSession {
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
+    // Once a still view has its frames or its time: how far it was refined, in one line.
+    void log_still_view_settled();
     void start_replay(double now_s);  // once the first frame and the probe's choice are shown
     // The camera for the gestures' view this frame, and in `omega` how fast the view turns.
     std::optional<Camera> view_camera(double now_s, glm::dvec3& omega);
@@ -121,6 +123,7 @@ class KioskSession {
     bool snapshot_requested_ = false;
     std::optional<ViewState> last_view_;  // the last frame's, to tell a still view
     bool faded_last_frame_ = false;
+    bool still_view_logged_ = false;  // this still view's "refined" line is in the log
     glm::dvec3 last_forward_{0.0};
     double last_forward_s_ = -1.0;
 };

@@ -16,6 +16,9 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
     o.still_frames = picture.still_frames;
     o.spectral = picture.spectral_stills && picture.still_frames > 1;
     o.still_depth = picture.still_depth;
+    o.still_depth_max = picture.still_depth_max;
+    o.still_seconds = picture.still_seconds;
+    o.still_frame_ms = picture.still_frame_ms;
     o.display = display_transform(picture, LookChoice{});
     return o;
 }

@@ -47,7 +47,10 @@ struct PictureConfig {
     double glare = 0.04;                      // share of the picture spread as glare; 0: none
     PictureTone tone = PictureTone::neutral;  // Khronos PBR Neutral, or a plain clip
     double exposure_ev = 0.0;                 // stops, added to each lighting preset's own
-    int still_frames = 16;                    // frames averaged, sub-pixel apart, while still
+    // While the view is still its frames are averaged, a sub-pixel apart, for still_seconds or
+    // until there are still_frames of them (gpu/still_schedule.hpp).
+    int still_frames = 1024;
+    double still_seconds = 20.0;  // 0: until still_frames
     // A convex stone's fire in still frames: each traces its own wavelengths, one per channel,
     // so the still picture comes to the spectral truth (gpu/hdr_picture.hpp).
     bool spectral_stills = true;
@@ -56,6 +59,11 @@ struct PictureConfig {
     // its depth loses the light it still carries, most in a diamond; still frames cost latency
     // while the view settles, not frame rate.
     int still_depth = 16;
+    // ... deeper as they accumulate, to this (doubled each time the frames double) ...
+    int still_depth_max = 64;
+    // ... while a still frame is expected to take at most this long (ms), the longest a touch
+    // waits for it (0: any).
+    double still_frame_ms = 100.0;
     // Start view: the girdle's width as a share of the picture's height, as far as the whole
     // ring still fits (app/framing.hpp).
     double stone_share = 0.25;

@@ -214,6 +214,12 @@ constexpr KeySpec<PictureConfig> kPictureKeys[] = {
                            PictureConfig& o) { r.boolean(n, k, o.spectral_stills); }},
     {"still_depth", [](ConfigReader& r, const Node& n, Key k,
                        PictureConfig& o) { r.integer(n, k, 0, 64, o.still_depth); }},
+    {"still_seconds", [](ConfigReader& r, const Node& n, Key k,
+                         PictureConfig& o) { r.number(n, k, 0.0, 600.0, o.still_seconds); }},
+    {"still_depth_max", [](ConfigReader& r, const Node& n, Key k,
+                           PictureConfig& o) { r.integer(n, k, 0, 64, o.still_depth_max); }},
+    {"still_frame_ms", [](ConfigReader& r, const Node& n, Key k,
+                          PictureConfig& o) { r.number(n, k, 0.0, 10000.0, o.still_frame_ms); }},
     {"stone_share", [](ConfigReader& r, const Node& n, Key k,
                        PictureConfig& o) { r.number(n, k, 0.05, 0.8, o.stone_share); }},
 };

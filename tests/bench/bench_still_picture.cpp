@@ -17,6 +17,7 @@
 //                       [--still-depth D] [--cache DIR] [--only TEXT] [--size N] [--images DIR]
 //                       [--reference-check N] [--reference-check-spp N] [--without-fire]
 //                       [--reference-wavelengths N] [--reference-spp N] [--msaa N]
+//                       [--checkpoints N,N,...] [--still-depth-max D]
 //
 // Each picture's line ends with its frames' summed time (glFinish-bounded, the programs' first
 // use included). --depth, --min-weight: the GPU trace's (default 8, 1e-4); --still-frames: how
@@ -31,8 +32,15 @@
 // reference at the D line only and the trace without fire, what is left of the trace's own
 // error when dispersion is taken out. --reference-wavelengths, --reference-spp: a finer
 // reference to measure against (kept apart in the cache, by name).
+//
+// --checkpoints 16,64,256,...: instead, the kiosk's still view as it accumulates (spectral
+// fire, the still frames from --still-depth, deeper to --still-depth-max as the kiosk's
+// picture.still_depth_max makes them: gpu/still_schedule.hpp), its ΔE00 printed after each
+// count of frames with the frames' summed time and the last frame's depth: the picture against
+// the frames a still view is given (docs/accuracy.md, "The still view by time").
 #include <CLI/CLI.hpp>
 
+#include <algorithm>
 #include <cstdio>
 #include <filesystem>
 #include <string>
@@ -171,6 +179,42 @@ gem::ImageError error_of(gem::Image picture, const gem::Image& reference_display
     return must(gem::compare_images(picture, reference_display, {.only_stone = true}));
 }
 
+// The kiosk's still view of `s`, drawn frame by frame up to the last checkpoint, compared with
+// `reference_display` at each.
+void still_view_by_frames(const StillScene& s, const gem::Image& reference_display,
+                          const std::vector<int>& checkpoints, int depth, double min_weight,
+                          int still_depth, int still_depth_max) {
+    const gem::Scene scene = scene_of(s);
+    const gem::Environment environment = must(gem::build_environment(scene));
+    auto renderer =
+        trace_renderer(scene, environment, depth, min_weight, TraceDispersion::spectral);
+    auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
+    auto hdr = must(gem::gpu::HdrPicture::make(s.size, s.size,
+                                               {.samples = 4,
+                                                .display = {},
+                                                .glare = 0.0,
+                                                .still_frames = checkpoints.back(),
+                                                .spectral = true,
+                                                .still_depth = still_depth,
+                                                .still_depth_max = still_depth_max}));
+    hdr.begin_frame(false);
+    double ms = 0.0;
+    std::size_t next = 0;
+    for (int frame = 1; frame <= checkpoints.back(); ++frame) {
+        auto drawn = must(gem::gpu::draw_picture_frame(renderer, hdr, scene.camera,
+                                                       renderer.stone_radius_mm(), true,
+                                                       gem::gpu::FrameWait::frame, target));
+        ms += drawn.cpu_ms;
+        if (frame != checkpoints[next]) continue;
+        const gem::ImageError e = error_of(target.read(), reference_display);
+        std::printf("%-22s still view, %5d frames, the last at depth %2d          ΔE00 %5.2f  "
+                    "p99 %5.1f  %7.0f ms\n",
+                    s.name, frame, hdr.still_frame().depth, e.delta_e_mean, e.delta_e_p99, ms);
+        std::fflush(stdout);
+        ++next;
+    }
+}
+
 // A still frame with spectral fire against one with exact fire, drawn in turn.
 void frame_costs(const StillScene& s, int frames, int depth, double min_weight) {
     const gem::Scene scene = scene_of(s);
@@ -224,6 +268,8 @@ int main(int argc, char** argv) {
     int reference_wavelengths = 12;
     int reference_spp = 16;
     int msaa = 4;
+    std::vector<int> checkpoints;
+    int still_depth_max = 0;
     CLI::App app{"bench_still_picture: the still picture against the spectral reference"};
     app.add_option("--frames", frames, "frames timed per fire")->check(CLI::Range(1, 1000));
     app.add_option("--cache", cache, "references are kept here")->capture_default_str();
@@ -256,7 +302,15 @@ int main(int argc, char** argv) {
     app.add_option("--msaa", msaa, "MSAA samples of the pictures")
         ->check(CLI::Range(1, 16))
         ->capture_default_str();
+    app.add_option("--checkpoints", checkpoints,
+                   "the kiosk's still view, compared after each of these counts of frames")
+        ->delimiter(',')
+        ->check(CLI::Range(1, 1024));
+    app.add_option("--still-depth-max", still_depth_max,
+                   "with --checkpoints: still frames deeper as they accumulate, to this")
+        ->check(CLI::Range(0, 64));
     CLI11_PARSE(app, argc, argv);
+    std::sort(checkpoints.begin(), checkpoints.end());
     auto context = must(gem::gpu::EglContext::headless());
     std::printf("GL: %s\n", context.description().c_str());
 
@@ -323,6 +377,11 @@ int main(int argc, char** argv) {
             must(gem::write_png(
                 ref, std::filesystem::path(images) / (std::string(s.name) + "-reference.png")));
         }
+        if (!checkpoints.empty()) {
+            still_view_by_frames(s, ref, checkpoints, depth, min_weight, still_depth,
+                                 still_depth_max);
+            continue;
+        }
         for (std::size_t i = 0; i < variants.size(); ++i) {
             double ms = 0.0;
             const gem::Image picture = gpu_picture(s, variants[i], depth, min_weight, msaa, &ms);
@@ -337,6 +396,7 @@ int main(int argc, char** argv) {
             }
         }
     }
+    if (!checkpoints.empty()) return 0;
     std::printf("\nWhat a still frame costs (trace, depth %d, 4× MSAA)\n", depth);
     for (const StillScene& s : scenes) {
         if (!only.empty() && std::string(s.name).find(only) == std::string::npos) continue;

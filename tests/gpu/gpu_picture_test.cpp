@@ -243,5 +243,38 @@ TEST(GpuPicture, AStillViewsFramesAfterItsFirstArePointSamples) {
     EXPECT_TRUE(gpu::gl_check("point samples test").ok());
 }
 
+TEST(GpuPicture, AStillViewDeepensAsItsFramesAccumulateAndEndsWhenItsTimeIsUp) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    auto made = gpu::HdrPicture::make(8, 8,
+                                      {.samples = 1,
+                                       .display = {},
+                                       .glare = 0.0,
+                                       .still_frames = 1024,
+                                       .still_depth = 16,
+                                       .still_depth_max = 64,
+                                       .still_seconds = 2.0});
+    ASSERT_TRUE(made.ok()) << made.error();
+    gpu::HdrPicture& hdr = made.value();
+    hdr.begin_frame(false, 0.0);
+    EXPECT_EQ(hdr.still_frame().depth, 0) << "a moving frame traces the moving depth";
+    // 40 frames 0.04 s apart: 1.6 s, within the view's 2 s. The rule's depths (StillSchedule):
+    // 16 for the first 16 frames, 32 for the next 16, then 64.
+    for (int f = 0; f < 40; ++f) {
+        hdr.begin_frame(true, 0.04 * f);
+        ASSERT_FALSE(hdr.settled()) << f;
+        EXPECT_EQ(hdr.still_frame().depth, f < 16 ? 16 : f < 32 ? 32 : 64) << f;
+        EXPECT_EQ(hdr.still_frames_drawn(), f + 1);
+    }
+    hdr.begin_frame(true, 2.0);
+    EXPECT_TRUE(hdr.settled());
+    EXPECT_TRUE(hdr.refined());
+    EXPECT_EQ(hdr.still_frames_drawn(), 40) << "the frame begun at 2 s is not drawn";
+    EXPECT_EQ(hdr.still_frame().depth, 0);
+    hdr.begin_frame(false, 2.1);  // a touch
+    EXPECT_FALSE(hdr.settled());
+    EXPECT_EQ(hdr.still_frames_drawn(), 0);
+}
+
 }  // namespace
 }  // namespace gem

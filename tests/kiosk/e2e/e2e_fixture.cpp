@@ -83,6 +83,9 @@ fs::path write_config(const fs::path& dir, const fs::path& catalogue, const std:
         << "\ninertia_half_life_s = 0.0\ntap = \"none\"\ntwo_finger_tap = \"none\"\n"
         << "[attract]\nidle_s = 0.0\n"
         << "[render]\nmethod = \"table\"\ncube_face = 64\ndepth = 6\n"
+        // A still view by its count of frames, not by time: what it shows once settled is the
+        // same on a loaded machine (reference_picture() draws those frames).
+        << "[picture]\nstill_frames = 16\nstill_seconds = 0.0\n"
         << "[catalogue]\ndefault_dir = \"" << catalogue.string() << "\"\nstate_dir = \""
         << (dir / "state").string() << "\"\ninbox_dir = \"" << (dir / "state" / "inbox").string()
         << "\"\nsettle_s = 0.3\n"

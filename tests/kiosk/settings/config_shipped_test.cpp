@@ -96,9 +96,9 @@ TEST(ConfigShipped, NamesAndDocumentsEveryKnownKey) {
     const std::map<std::string, bool> keys = documented_keys(read_text(kShipped));
     const std::vector<std::string> known = known_config_keys();
     // Counted by hand from config/README.md: 2 top-level keys, display 10, input 4, gestures
-    // 12, attract 6, render 7, picture 8, catalogue 6, designs 8, snapshot 2, background 5,
+    // 12, attract 6, render 7, picture 11, catalogue 6, designs 8, snapshot 2, background 5,
     // lighting 4, lighting.light 3.
-    EXPECT_EQ(known.size(), 77u);
+    EXPECT_EQ(known.size(), 80u);
     for (const std::string& key : known) {
         const auto found = keys.find(key);
         if (found == keys.end()) {
@@ -180,6 +180,9 @@ TEST(ConfigShipped, StatesTheBuiltInDefaults) {
     EXPECT_EQ(s.picture.still_frames, d.picture.still_frames);
     EXPECT_EQ(s.picture.spectral_stills, d.picture.spectral_stills);
     EXPECT_EQ(s.picture.still_depth, d.picture.still_depth);
+    EXPECT_EQ(s.picture.still_seconds, d.picture.still_seconds);
+    EXPECT_EQ(s.picture.still_depth_max, d.picture.still_depth_max);
+    EXPECT_EQ(s.picture.still_frame_ms, d.picture.still_frame_ms);
 
     EXPECT_EQ(s.catalogue.default_dir, d.catalogue.default_dir);
     EXPECT_EQ(s.catalogue.state_dir, d.catalogue.state_dir);

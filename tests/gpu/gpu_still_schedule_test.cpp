@@ -1,0 +1,103 @@
+// How a still view is refined (gpu/still_schedule.hpp): its frames' depths written out by hand
+// from the rule, its time, its frame count, and the cost bound that keeps a touch answered.
+#include <gtest/gtest.h>
+
+#include <vector>
+
+#include "gpu/still_schedule.hpp"
+
+namespace gem::gpu {
+namespace {
+
+// The depths of a still view's frames, one frame a second apart, each reported to cost
+// `ms_per_depth` per unit of its depth; until settled or `limit` frames.
+std::vector<int> depths(StillSchedule& s, double ms_per_depth = 1.0, int limit = 2000) {
+    std::vector<int> out;
+    double t = 0.0;
+    s.begin_frame(false, t);  // moving
+    for (int f = 0; f < limit; ++f) {
+        s.begin_frame(true, t);
+        if (s.settled()) break;
+        out.push_back(s.depth());
+        s.frame_drawn(ms_per_depth * s.depth());
+        t += 1.0;
+    }
+    return out;
+}
+
+TEST(StillSchedule, TheDepthDoublesEachTimeTheFramesDoubleUpToItsMaximum) {
+    StillSchedule s({.frames = 80, .depth = 16, .depth_max = 64});
+    const std::vector<int> d = depths(s);
+    ASSERT_EQ(d.size(), 80u);  // frames 0..79, then settled
+    for (int i = 0; i < 16; ++i) EXPECT_EQ(d[i], 16) << i;
+    for (int i = 16; i < 32; ++i) EXPECT_EQ(d[i], 32) << i;
+    for (int i = 32; i < 80; ++i) EXPECT_EQ(d[i], 64) << i;  // 128 wanted at 64, held at 64
+    EXPECT_TRUE(s.settled());
+    EXPECT_EQ(s.depth(), 0);
+}
+
+TEST(StillSchedule, WithoutAMaximumOrAFirstDepthItNeverDeepens) {
+    StillSchedule fixed({.frames = 40, .depth = 16, .depth_max = 0});
+    for (int d : depths(fixed)) EXPECT_EQ(d, 16);
+    StillSchedule moving_depth({.frames = 40, .depth = 0, .depth_max = 64});
+    for (int d : depths(moving_depth)) EXPECT_EQ(d, 0);
+    // A maximum that is not a doubling of the first depth is reached, not passed.
+    StillSchedule odd({.frames = 40, .depth = 16, .depth_max = 24});
+    const std::vector<int> d = depths(odd);
+    EXPECT_EQ(d[15], 16);
+    EXPECT_EQ(d[16], 24);
+    EXPECT_EQ(d[39], 24);
+}
+
+TEST(StillSchedule, ItSettlesWhenItsTimeIsUpAndATouchRestartsIt) {
+    // One frame a second (depths()), 10 s: the frames begun at 0..9 s; the one at 10 s settles.
+    StillSchedule s({.frames = 1024, .depth = 16, .depth_max = 64, .seconds = 10.0});
+    EXPECT_EQ(depths(s).size(), 10u);
+    EXPECT_TRUE(s.settled());
+    s.begin_frame(true, 100.0);  // still: stays settled
+    EXPECT_TRUE(s.settled());
+    s.begin_frame(false, 100.0);  // a touch moved it
+    EXPECT_FALSE(s.settled());
+    EXPECT_EQ(s.index(), -1);
+    s.begin_frame(true, 100.5);
+    EXPECT_EQ(s.index(), 0);
+    EXPECT_EQ(s.depth(), 16);
+    s.begin_frame(true, 110.4);  // 9.9 s after the view's first frame
+    EXPECT_FALSE(s.settled());
+    s.begin_frame(true, 110.5);
+    EXPECT_TRUE(s.settled());
+}
+
+TEST(StillSchedule, ADeeperFrameIsDrawnOnlyWhileItsCostStaysWithinTheBound) {
+    // 2 ms per unit of depth: 16 → 32 ms, 32 → 64 ms, 64 → 128 ms. Within 100 ms: up to 32.
+    StillSchedule s({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
+    const std::vector<int> d = depths(s, 2.0);
+    ASSERT_EQ(d.size(), 64u);
+    EXPECT_EQ(d[15], 16);
+    EXPECT_EQ(d[16], 32);
+    EXPECT_EQ(d[40], 32);
+    // 8 ms per unit: even 16 costs 128 ms; the first depth is kept, never less.
+    StillSchedule slow({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
+    for (int depth : depths(slow, 8.0)) EXPECT_EQ(depth, 16);
+    // No frame measured yet (the view's first is multisampled and does not count): no deeper
+    // frame is risked.
+    StillSchedule unmeasured({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
+    unmeasured.begin_frame(false, 0.0);
+    for (int f = 0; f < 40; ++f) {
+        unmeasured.begin_frame(true, 0.0);
+        EXPECT_EQ(unmeasured.depth(), 16) << f;
+    }
+}
+
+TEST(StillSchedule, OneFrameIsNoStillViewAndTheFrameCountEndsIt) {
+    StillSchedule none({.frames = 1, .depth = 16});
+    none.begin_frame(true, 0.0);
+    EXPECT_EQ(none.index(), -1);
+    EXPECT_FALSE(none.settled());
+    StillSchedule four({.frames = 4, .depth = 16});
+    EXPECT_EQ(depths(four).size(), 4u);
+    EXPECT_EQ(four.index(), 3);  // the last frame drawn stays the mean's last
+}
+
+}  // namespace
+}  // namespace gem::gpu
