@@ -16,7 +16,7 @@
 namespace gem {
 
 struct SightGroup {
-    glm::dvec3 centre{0.0};           // where the group's cube is seen from: a member's middle (mm)
+    glm::dvec3 centre{0.0};           // where the group's cube is seen from: a member's girdle (mm)
     bool own = false;                 // one large stone alone
     std::vector<std::size_t> stones;  // indices into Piece::stones
 };

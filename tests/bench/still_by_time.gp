@@ -31,15 +31,15 @@ $diamond_fast << EOD
 20.0 1.31
 EOD
 $halo_here << EOD
-2.3 6.56
-8.6 6.36
-20.1 6.29
+2.3 6.41
+8.6 6.25
+20.1 6.16
 EOD
 $halo_fast << EOD
-0.21 6.56
-2.31 6.16
-12.4 6.04
-20.0 6.03
+0.21 6.41
+2.31 6.00
+12.4 5.84
+20.0 5.83
 EOD
 set terminal pngcairo size 900,460 font 'DejaVu Sans,11' linewidth 1.5
 set output out.'/still-view-by-time.png'

@@ -7,6 +7,8 @@
 #include <algorithm>
 #include <filesystem>
 
+#include <glm/gtc/matrix_transform.hpp>
+
 #include "piece/piece_file.hpp"
 #include "piece/sight_groups.hpp"
 
@@ -90,6 +92,50 @@ TEST(SightGroups, ABandOf36StonesNeedsAHandfulOfCubes) {
         EXPECT_LT(reach_mm(piece, g),
                   piece.radius_mm());  // an arc of neighbours, not the whole band
     }
+}
+
+}  // namespace
+}  // namespace gem
+
+namespace gem {
+namespace {
+
+// The mean of the corners of a stone's girdle facets, in the piece's frame: the middle of its
+// girdle counted from the cut's own facet kinds, not from its shape.
+glm::dvec3 girdle_corners_mean(const Piece& piece, std::size_t i) {
+    glm::dvec3 sum(0.0);
+    int n = 0;
+    for (const Facet& f : piece.stone_of(i).facets) {
+        if (f.kind != FacetKind::girdle) continue;
+        for (const std::uint32_t v : f.loop) {
+            sum += piece.stones[i].placement.to_piece(piece.stone_of(i).vertices[v]);
+            ++n;
+        }
+    }
+    EXPECT_GT(n, 0);
+    return sum / static_cast<double>(n);
+}
+
+TEST(SightGroups, AStonesCubeIsSeenFromItsGirdlesMiddleWhateverFrameItsFileGaveIt) {
+    Piece piece = shipped("solitaire.toml");
+    ASSERT_EQ(piece.stones.size(), 1u);
+    const glm::dvec3 girdle = girdle_corners_mean(piece, 0);
+    EXPECT_LT(glm::length(sight_groups(piece).front().centre - girdle), 0.01);
+    // The same stone in another frame: its vertices moved and turned inside it, its placement
+    // moved back, so that it stands where it stood.
+    const glm::dmat3 turn = glm::dmat3(glm::rotate(glm::dmat4(1.0), 0.7, glm::dvec3(1, 2, 3)));
+    const glm::dvec3 shift(0.4, -1.1, 0.3);
+    Stone& stone = piece.kinds[piece.stones[0].kind];
+    for (glm::dvec3& v : stone.vertices) v = turn * v + shift;
+    for (Facet& f : stone.facets) {
+        f.plane.n = turn * f.plane.n;
+        f.plane.d = glm::dot(f.plane.n, shift) + f.plane.d;
+    }
+    Placement& at = piece.stones[0].placement;
+    at.position = at.to_piece(-glm::transpose(turn) * shift);
+    at.rotation = at.rotation * glm::transpose(turn);
+    EXPECT_LT(glm::length(girdle_corners_mean(piece, 0) - girdle), 1e-9);
+    EXPECT_LT(glm::length(sight_groups(piece).front().centre - girdle), 0.01);
 }
 
 }  // namespace
