@@ -1,5 +1,7 @@
 #include "gpu/still_schedule.hpp"
 
+#include <algorithm>
+
 namespace gem::gpu {
 
 int StillSchedule::wanted_depth(int index) const {

@@ -19,14 +19,12 @@
 // linearly with its depth, docs/accuracy.md), stays within `frame_ms`. Frames never trace
 // shallower than `depth`: a machine slower than that bound still gets today's still picture.
 
-#include <algorithm>
-
 namespace gem::gpu {
 
 struct StillScheduleOptions {
-    int frames = 16;        // at most this many frames averaged (the moving view's own first)
-    int depth = 0;          // the still frames' depth at first; 0: the moving frames'
-    int depth_max = 0;      // the deepest they come to as frames accumulate (≤ depth: never deeper)
+    int frames = 16;    // at most this many frames averaged (the moving view's own first)
+    int depth = 0;      // the still frames' depth at first; 0: the moving frames'
+    int depth_max = 0;  // the deepest they come to as frames accumulate (≤ depth: never deeper)
     double seconds = 0.0;   // refined at most this long after the view stopped; 0: no limit
     double frame_ms = 0.0;  // a deeper frame only while expected within this; 0: no bound
 };

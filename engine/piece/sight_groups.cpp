@@ -15,12 +15,11 @@ namespace {
 constexpr double kOwnShare = 0.6;
 constexpr std::size_t kOwnAtMost = 4;
 
-// Where a stone's cube is seen from, in its own frame: the middle of its girdle, the level
-// along its table's axis (its largest facet's normal) where it is widest, on the axis through
-// the middle of its table (the table's area centroid), whatever frame its file gave it. Its exits leave about the girdle,
-// and the metal that holds it stands there: seen from the middle of its box, which lies in a
-// brilliant's pavilion, the shipped pieces measured 0.1 to 0.3 ΔE00 further from the reference
-// (docs/pieces.md).
+// Where a stone's cube is seen from, in its own frame, whatever frame its file gave it: the
+// middle of its girdle, at the level along its table's axis (its largest facet's normal) where
+// the stone is widest. Its exits leave about the girdle, and the metal that holds it stands
+// there: seen from the middle of its box, which lies in a brilliant's pavilion, the shipped
+// pieces measured 0.1 to 0.3 ΔE00 further from the reference (docs/pieces.md).
 glm::dvec3 girdle_middle(const Stone& stone) {
     const auto table = std::max_element(
         stone.facets.begin(), stone.facets.end(), [&](const Facet& a, const Facet& b) {
@@ -57,8 +56,8 @@ glm::dvec3 girdle_middle(const Stone& stone) {
         ww += b * b;
     }
     const double angle = 0.5 * std::atan2(2.0 * uw, uu - ww);
-    for (const glm::dvec3& e : {std::cos(angle) * u + std::sin(angle) * w,
-                                -std::sin(angle) * u + std::cos(angle) * w}) {
+    for (const glm::dvec3& e :
+         {std::cos(angle) * u + std::sin(angle) * w, -std::sin(angle) * u + std::cos(angle) * w}) {
         double lo = std::numeric_limits<double>::infinity(), hi = -lo;
         for (const glm::dvec3& v : stone.vertices) {
             lo = std::min(lo, glm::dot(v - middle, e));
@@ -154,7 +153,8 @@ std::vector<SightGroup> sight_groups(const Piece& piece) {
     const bool own_allowed = large <= kOwnAtMost;
     // Neighbours within three of a seed's radii share its cube; wider while there are too many.
     for (double join = 3.0;; join *= 1.5) {
-        std::vector<SightGroup> groups = grouped(centre, seen_from, radius, order, own_allowed, join);
+        std::vector<SightGroup> groups =
+            grouped(centre, seen_from, radius, order, own_allowed, join);
         if (groups.size() <= kMostSightGroups) return groups;
     }
 }

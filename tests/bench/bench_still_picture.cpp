@@ -207,9 +207,10 @@ void still_view_by_frames(const StillScene& s, const gem::Image& reference_displ
         ms += drawn.cpu_ms;
         if (frame != checkpoints[next]) continue;
         const gem::ImageError e = error_of(target.read(), reference_display);
-        std::printf("%-22s still view, %5d frames, the last at depth %2d          ΔE00 %5.2f  "
-                    "p99 %5.1f  %7.0f ms\n",
-                    s.name, frame, hdr.still_frame().depth, e.delta_e_mean, e.delta_e_p99, ms);
+        std::printf(
+            "%-22s still view, %5d frames, the last at depth %2d          ΔE00 %5.2f  "
+            "p99 %5.1f  %7.0f ms\n",
+            s.name, frame, hdr.still_frame().depth, e.delta_e_mean, e.delta_e_p99, ms);
         std::fflush(stdout);
         ++next;
     }
