@@ -44,6 +44,7 @@ struct Options {
     std::string coverage;
     std::string method = "reference";
     std::string piece;
+    bool metal_sees_environment = false;
     std::string tone = "neutral";
     double exposure_ev = 0.0;
     gem::GpuRenderOptions gpu;
@@ -161,6 +162,9 @@ int main(int argc, char** argv) {
     app.add_option("--coverage", o.coverage,
                    "also write where the stone or piece covers a pixel, as a white-on-black PNG "
                    "(reference; what compare_pictures measures over)");
+    app.add_flag("--metal-sees-environment", o.metal_sees_environment,
+                 "reference, --piece: the metal's reflections see the environment and the lights "
+                 "only, as the GPU's metal does (what the metal's view of the piece changes)");
     app.add_option("--piece", o.piece,
                    "a piece description (config/pieces/README.md) instead of a stone")
         ->check(CLI::ExistingFile);
@@ -248,7 +252,10 @@ int main(int argc, char** argv) {
     gem::Result<gem::Image> image = gem::Error{""};
     if (piece) {
         image = gem::render_piece_reference(*piece, environment.value(), gem::render_settings(s),
-                                            &stats);
+                                            &stats,
+                                            o.metal_sees_environment
+                                                ? gem::PieceSight::metal_sees_environment
+                                                : gem::PieceSight::everything);
     } else {
         gem::Result<gem::Stone> stone = gem::build_stone(s);
         if (!stone) return fail(stone.error());

@@ -116,7 +116,7 @@ glm::dvec3 PieceTracer::onward(const Ray& ray, int from_stone, const glm::dvec3&
                                int pass, double share, Scratch& scratch) const {
     const double w = std::max({weight.x, weight.y, weight.z}) * share;
     if (w < kMinShare) return weight * escaped(ray, from_stone, from_normal, k);
-    const Nearest next = nearest(ray, from_stone, sight_ == PieceSight::everything);
+    const Nearest next = nearest(ray, from_stone, sight_ != PieceSight::metal_only);
     if (next.stone < 0 && !next.metal_hit) {
         return weight * escaped(ray, from_stone, from_normal, k);
     }
@@ -138,7 +138,7 @@ glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3
         if (lobe == 0.0) continue;
         if (from_stone >= 0 && glm::dot(from_normal, to_light) < 0.0) continue;
         const Nearest block =
-            nearest({ray.origin, to_light}, from_stone, sight_ == PieceSight::everything);
+            nearest({ray.origin, to_light}, from_stone, sight_ != PieceSight::metal_only);
         const double reach = light.directional ? std::numeric_limits<double>::infinity()
                                                : glm::length(light.position - ray.origin);
         if ((block.stone >= 0 || block.metal_hit) && block.t < reach) continue;
@@ -207,6 +207,14 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     if (reflected.weight == glm::dvec3(0.0)) return glm::dvec3(0.0);
     const glm::dvec3& l = reflected.direction;
     const glm::dvec3& weight = reflected.weight;
+    if (sight_ == PieceSight::metal_sees_environment) {
+        glm::dvec3 sum = environment_.radiance(l);
+        for (const Light& light : shading_.lights) {
+            sum += light.colour *
+                   specular_lobe(l, direction_to_light(light, hit.point), shading_.h);
+        }
+        return weight * sum;
+    }
     return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), 1.0, weight, iors,
                   pass - 1, share, scratch);
 }

@@ -21,10 +21,12 @@
 
 namespace gem {
 
-// What a ray leaving one part of a piece may meet: every other part (the truth), or the metal
-// alone, as a virtual cube holding only the metal gives the GPU's stones. The second measures
-// what stones in the GPU's cube could gain at most (gpu_piece_test.cpp).
-enum class PieceSight { everything, metal_only };
+// What a ray leaving one part of a piece may meet: every other part (the truth); the metal
+// alone, as a virtual cube holding only the metal gives the GPU's stones; or everything, but
+// the metal's reflections see only the environment and the lights, as the GPU's metal does.
+// The second and third measure what the GPU's stones and metal could gain at most
+// (gpu_piece_test.cpp, docs/pieces.md).
+enum class PieceSight { everything, metal_only, metal_sees_environment };
 
 // The metal's triangles as a solid for the intersectors (trace/intersector.hpp), each facing
 // where its vertex normals do; triangles without area are left out.

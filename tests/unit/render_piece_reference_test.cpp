@@ -4,11 +4,13 @@
 // the metal's F0, the Fresnel reflectance at normal incidence, and a rough one the reflectance
 // of the white furnace. Two stones that see only the
 // metal (PieceSight::metal_only) each draw what they draw alone, and differ where they see each
-// other (PieceSight::everything).
+// other (PieceSight::everything); so does a metal that sees only the environment
+// (PieceSight::metal_sees_environment) beside a wall it would otherwise see.
 
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <cstdio>
 
 #include "optics/material.hpp"
 #include "optics/microfacet.hpp"
@@ -153,6 +155,55 @@ TEST(PieceReference, StonesThatSeeOnlyTheMetalDrawWhatEachDrawsAlone) {
     ASSERT_GT(covered, 200);
     EXPECT_LT(blind_worst, 1e-5);
     EXPECT_GT(seeing_mean / covered, 1e-3);  // each stone's exits meet the other
+}
+
+// A rough plate facing up beside a wall of metal standing on its edge, seen from above (the
+// wall edge-on, so not itself in the picture), under the white furnace's sky with a light. A
+// metal that sees only the environment and the lights (PieceSight::metal_sees_environment, as
+// the GPU's metal) draws the plate as the plate alone draws it; the truth differs beside the
+// wall, which takes some of the plate's reflections and gives back what it sees.
+TEST(PieceReference, AMetalThatSeesOnlyTheEnvironmentDrawsWhatItDrawsAlone) {
+    auto piece_of = [](bool wall) {
+        Piece piece = plate(Metal::platinum, 0.25f);
+        // The wall's corners are there either way, so the camera frames the same sphere.
+        const glm::vec3 corners[4] = {{2, 0, -5}, {2, 0, 5}, {2, 6, 5}, {2, 6, -5}};
+        for (const glm::vec3& c : corners) {
+            piece.metal.positions.push_back(c);
+            piece.metal.normals.push_back(glm::vec3(-1, 0, 0));
+        }
+        if (wall) piece.metal.indices.insert(piece.metal.indices.end(), {4, 5, 6, 4, 6, 7});
+        return piece;
+    };
+    RenderSettings s = from_above();
+    s.samples_per_pixel = 16;
+    s.shading.lights = {Light{{-20.0, 60.0, 10.0}, false, glm::dvec3(2.0)}};
+    const Environment sky = Environment::uniform(glm::dvec3(1.0));
+    auto render = [&](const Piece& piece, PieceSight sight) {
+        auto image = render_piece_reference(piece, sky, s, nullptr, sight);
+        EXPECT_TRUE(image) << image.error();
+        return image ? image.value() : Image{};
+    };
+    const Image alone = render(piece_of(false), PieceSight::everything);
+    const Image blind = render(piece_of(true), PieceSight::metal_sees_environment);
+    const Image truth = render(piece_of(true), PieceSight::everything);
+    double blind_worst = 0.0, truth_mean = 0.0;
+    int covered = 0;
+    for (int y = 0; y < s.height; ++y) {
+        for (int x = 0; x < s.width; ++x) {
+            const glm::vec4 a = alone.at(x, y);
+            if (a.w < 1.0f) continue;
+            for (int c = 0; c < 3; ++c) {
+                blind_worst = std::max(blind_worst, double(std::abs(blind.at(x, y)[c] - a[c])));
+                truth_mean += std::abs(truth.at(x, y)[c] - a[c]) / 3.0;
+            }
+            ++covered;
+        }
+    }
+    ASSERT_GT(covered, 500);
+    EXPECT_LT(blind_worst, 1e-5);
+    std::printf("the plate beside the wall against the plate alone: %.4f a channel\n",
+                truth_mean / covered);
+    EXPECT_GT(truth_mean / covered, 1e-3);  // the plate's reflections meet the wall
 }
 
 }  // namespace
