@@ -10,6 +10,7 @@
 // stones' models chosen as the kiosk chooses them (gpu/stone_models.hpp), the choice printed. A
 // piece with a kind of stone whose tables are given (--tables, as the kiosk builds them for a
 // non-convex stone: gpu/piece_tables.hpp) is drawn a third time, that kind from its tables.
+// Last, per piece, the time to make again what its stones see, as a change of look does.
 //
 //   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--tables FILE.gemdb ...]
 //                [piece.toml ...]
@@ -18,6 +19,7 @@
 #include <GLES3/gl3.h>
 
 #include <algorithm>
+#include <chrono>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -139,6 +141,7 @@ struct Subject {
     std::vector<double> metal_ms;
     std::vector<double> submit_ms;
     std::vector<double> depth_ms;
+    double sight_ms = 0.0;  // what the stones see made again, as a new look makes it
 };
 
 }  // namespace
@@ -242,23 +245,41 @@ int main(int argc, char** argv) {
             s.depth_ms.push_back(stats.stone_depth_ms);
         }
     }
+    // What the stones see (each group's cube of the metal, gpu/frame_renderer.cpp) is made when
+    // the piece is loaded and again when the look's lights change (FrameRenderer::set_lights),
+    // not per frame: that remaking timed, glFinish-bounded, median of 5.
+    for (Subject& s : subjects) {
+        std::vector<double> ms;
+        for (int i = 0; i < 5; ++i) {
+            glFinish();
+            const auto t0 = std::chrono::steady_clock::now();
+            must(s.scene->renderer().set_lights(look.lights));
+            glFinish();
+            ms.push_back(
+                std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0)
+                    .count());
+        }
+        s.sight_ms = median(ms);
+    }
     std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
                 width, height, exact_fire ? "exact" : "first-order", frames);
-    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s\n", "piece",
+    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s\n", "piece",
                 "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms", "metal ms",
-                "x first", "centre px", "others px", "shaded px", "kept px", "metal tri");
+                "x first", "centre px", "others px", "shaded px", "kept px", "metal tri",
+                "sight ms");
     const double first = median(subjects.front().frame_ms);
     for (const Subject& s : subjects) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
         std::printf(
-            "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu\n",
+            "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu "
+            "%9.1f\n",
             s.file.c_str(),
             s.tabled   ? "tables"
             : s.chosen ? "chosen"
                        : "config",
             s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms), median(s.depth_ms),
             median(s.submit_ms), median(s.metal_ms), median(s.frame_ms) / first, px.centre,
-            px.others, px.shaded, px.kept, s.piece->metal.indices.size() / 3);
+            px.others, px.shaded, px.kept, s.piece->metal.indices.size() / 3, s.sight_ms);
     }
     return 0;
 }
