@@ -251,11 +251,10 @@ int main(int argc, char** argv) {
     gem::RenderStats stats;
     gem::Result<gem::Image> image = gem::Error{""};
     if (piece) {
-        image = gem::render_piece_reference(*piece, environment.value(), gem::render_settings(s),
-                                            &stats,
-                                            o.metal_sees_environment
-                                                ? gem::PieceSight::metal_sees_environment
-                                                : gem::PieceSight::everything);
+        image = gem::render_piece_reference(
+            *piece, environment.value(), gem::render_settings(s), &stats,
+            o.metal_sees_environment ? gem::PieceSight::metal_sees_environment
+                                     : gem::PieceSight::everything);
     } else {
         gem::Result<gem::Stone> stone = gem::build_stone(s);
         if (!stone) return fail(stone.error());

@@ -123,7 +123,26 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
 }
 
 void HdrPicture::begin_frame(bool still, double now_s) {
+    // The next band of a still frame drawn in bands; a touch ends it at once.
+    if (still && band_ + 1 < bands_.bands() && accumulating()) {
+        ++band_;
+        return;
+    }
+    band_ = 0;
     schedule_.begin_frame(still && accumulate_.has_value(), now_s);
+    bands_.start(accumulating() ? schedule_.bands() : 1);
+}
+
+void HdrPicture::frame_drawn(double ms) {
+    bands_.measured(band_, ms);
+    // A frame in bands is judged by its dearest band, what a touch waits for.
+    if (band_ + 1 >= bands_.bands()) schedule_.frame_drawn(bands_.dearest_ms() * bands_.bands());
+}
+
+std::optional<PixelRect> HdrPicture::band() const {
+    if (!accumulating() || bands_.bands() <= 1) return std::nullopt;
+    // Rows of what the scene covers (all of it without a cover).
+    return bands_.rows(cover_ ? cover_->rect : PixelRect::whole(width_, height_), band_);
 }
 
 bool HdrPicture::accumulating() const {
@@ -193,7 +212,13 @@ void HdrPicture::bind(const std::optional<SceneCover>& cover) {
     glBindFramebuffer(GL_FRAMEBUFFER,
                       multisampled_frame() ? multisampled_.get() : resolved_framebuffer_.get());
     glViewport(0, 0, width_, height_);
-    glDisable(GL_SCISSOR_TEST);
+    // A still frame drawn in bands draws this band's rows only, its clear included.
+    if (const std::optional<PixelRect> rows = band()) {
+        glEnable(GL_SCISSOR_TEST);
+        scissor(*rows);
+    } else {
+        glDisable(GL_SCISSOR_TEST);
+    }
 }
 
 Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times) {
@@ -222,7 +247,13 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         // The running mean: the k-th frame (from 0) has weight 1 / (k + 1).
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
-        scissor(mean_damage_.rewrite(content, whole));
+        // A band adds its rows only: each row has then had each frame of the view once.
+        PixelRect rows = mean_damage_.rewrite(content, whole);
+        if (const std::optional<PixelRect> b = band()) {
+            rows = PixelRect{std::max(rows.x0, b->x0), std::max(rows.y0, b->y0),
+                             std::min(rows.x1, b->x1), std::min(rows.y1, b->y1)};
+        }
+        scissor(rows);
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(schedule_.index() + 1));
@@ -237,6 +268,13 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     }
     if (schedule_.index() >= 0) scene = mean_.get();
     lap(times ? &times->resolve_ms : nullptr);
+    // A band before its frame's last: the picture shown changes once the frame is whole, so
+    // its glare and tone curve wait for that (they would cost every band what a frame costs).
+    if (band() && band_ + 1 < bands_.bands()) {
+        glDisable(GL_SCISSOR_TEST);
+        target_region_ = PixelRect{};
+        return true;
+    }
     const bool glare = glare_ && options_.glare > 0.0;
     if (glare) {
         auto ran = glare_->run(scene, content);

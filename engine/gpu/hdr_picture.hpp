@@ -20,7 +20,10 @@
 // wavelengths, one per colour channel (still_frame(), optics/spectrum.hpp: StillSpectrum), so
 // that the mean of a still view's frames is each channel's spectral integral; and they may
 // trace deeper than the moving frames (still_depth), deeper still as they accumulate, for as
-// long as the view is given (still_schedule.hpp).
+// long as the view is given (still_schedule.hpp). A still frame that would keep a touch
+// waiting longer than still_frame_ms is drawn in horizontal bands, one a frame (band()); each
+// band adds its rows to the mean with the frame's weight, so the mean is every row's own, and
+// the picture shown is finished once the frame is whole.
 //
 // Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass after
 // the scene runs only where the picture changes: around what the piece covers in this frame and
@@ -40,6 +43,7 @@
 #include "gpu/program.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/scene_cover.hpp"
+#include "gpu/still_bands.hpp"
 #include "gpu/still_schedule.hpp"
 #include "optics/spectrum.hpp"
 #include "render/tone_map.hpp"
@@ -85,8 +89,8 @@ class HdrPicture {
     // begins (a still view's time is counted from its first frame; any clock). The camera of
     // the frame should be moved by jitter_ndc() (CameraSettings::shift).
     void begin_frame(bool still, double now_s = 0.0);
-    // After drawing it: what it cost (ms), by which a still view's next frame may go deeper.
-    void frame_drawn(double ms) { schedule_.frame_drawn(ms); }
+    // After drawing it: what it cost (ms), by which a still view's next frame is judged.
+    void frame_drawn(double ms);
     glm::dvec2 jitter_ndc() const;
     // What this frame traces differently (FrameRenderer::render): a still frame's wavelengths,
     // when the picture is spectral, and its depth; a moving frame's defaults else.
@@ -136,6 +140,9 @@ class HdrPicture {
     bool multisampled_frame() const;
     // This frame is added to the still view's mean.
     bool accumulating() const;
+    // The rows this frame draws and adds to the mean, when its still frame is drawn in bands
+    // (StillSchedule::bands(): one band a frame, so a touch waits for one band only).
+    std::optional<PixelRect> band() const;
     // Every surface rewritten whole at its next frame.
     void forget_all();
 
@@ -159,6 +166,8 @@ class HdrPicture {
     bool mean_high_precision_ = false;
     Framebuffer mean_framebuffer_;
     StillSchedule schedule_;  // this frame's place in the still view's mean, and its depth
+    int band_ = 0;            // the band of its still frame this frame draws
+    StillBands bands_;        // where that still frame's bands lie, and what they cost
     std::optional<StillSpectrum> spectrum_;
     std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;

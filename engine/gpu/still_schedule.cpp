@@ -1,6 +1,7 @@
 #include "gpu/still_schedule.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 namespace gem::gpu {
 
@@ -18,6 +19,7 @@ void StillSchedule::begin_frame(bool still, double now_s) {
     if (!still || options_.frames <= 1) {
         index_ = -1;
         depth_ = 0;
+        bands_ = 1;
         settled_ = false;
         ms_per_depth_ = 0.0;
         deepest_ = 0;
@@ -30,21 +32,38 @@ void StillSchedule::begin_frame(bool still, double now_s) {
         settled_ = true;
         settled_s_ = now_s;
         depth_ = 0;
+        bands_ = 1;
         return;
     }
     ++index_;
     depth_ = wanted_depth(index_);
-    // Back down the doubling while the frame would keep a touch waiting too long.
-    while (depth_ > options_.depth && options_.frame_ms > 0.0 &&
-           (ms_per_depth_ <= 0.0 || ms_per_depth_ * depth_ > options_.frame_ms)) {
+    bands_ = 1;
+    // The view's first frame is the moving view's own, whole; without a bound or a measured
+    // frame, every frame is whole and no deeper than the first depth.
+    if (index_ == 0 || options_.frame_ms <= 0.0) return note_depth();
+    if (ms_per_depth_ <= 0.0) {
+        depth_ = std::min(depth_, options_.depth);
+        return note_depth();
+    }
+    // Back down the doubling while even kMostBands bands would keep a touch waiting too long.
+    const auto bands_for = [&](int depth) {
+        return static_cast<int>(std::ceil(ms_per_depth_ * depth / options_.frame_ms));
+    };
+    while (depth_ > options_.depth && bands_for(depth_) > kMostBands) {
         depth_ = std::max(depth_ / 2, options_.depth);
     }
+    bands_ = std::clamp(bands_for(depth_), 1, kMostBands);
+    note_depth();
+}
+
+void StillSchedule::note_depth() {
     deepest_ = std::max(deepest_, depth_);
 }
 
 void StillSchedule::frame_drawn(double ms) {
     // The view's first frame is multisampled (HdrPicture::multisampled_frame): not what the
-    // point-sampled frames after it cost.
+    // point-sampled frames after it cost. A frame in bands paid what is not traced once a band,
+    // so its cost per depth overstates the trace's: the next frame's bands err on the many.
     if (index_ >= 1 && depth_ > 0 && ms > 0.0) ms_per_depth_ = ms / depth_;
 }
 

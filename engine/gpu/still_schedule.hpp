@@ -14,10 +14,11 @@
 // The view is refined while the shopper looks: for `seconds` after it stopped (0: no limit),
 // until it has `frames` frames, the point where more change nothing the reference can tell
 // (1024 at depth 64: ΔE00 1.17, the 64-sample reference's own noise). A touch restarts it at
-// once; the frame in flight is what it waits for, so a deeper frame is drawn only while its
-// cost, estimated from the last still frame's (on llvmpipe a frame's cost grows about
-// linearly with its depth, docs/accuracy.md), stays within `frame_ms`. Frames never trace
-// shallower than `depth`: a machine slower than that bound still gets today's still picture.
+// once; the frame in flight is what it waits for, so a still frame expected to take longer
+// than `frame_ms` is drawn in bands(), horizontal bands of the picture one after another,
+// each a frame of the display (HdrPicture). Its cost is estimated from the last still frame's
+// (on llvmpipe a frame's cost grows about linearly with its depth, docs/accuracy.md); a frame
+// that would need more than kMostBands bands is traced shallower, never below `depth`.
 
 namespace gem::gpu {
 
@@ -26,20 +27,25 @@ struct StillScheduleOptions {
     int depth = 0;      // the still frames' depth at first; 0: the moving frames'
     int depth_max = 0;  // the deepest they come to as frames accumulate (≤ depth: never deeper)
     double seconds = 0.0;   // refined at most this long after the view stopped; 0: no limit
-    double frame_ms = 0.0;  // a deeper frame only while expected within this; 0: no bound
+    double frame_ms = 0.0;  // a frame (or band of one) expected within this; 0: no bound
 };
 
 class StillSchedule {
   public:
     // The first depth keeps its frames this long; then each doubling of the frames doubles it.
     static constexpr int kFramesAtFirstDepth = 16;
+    // A frame in more bands than this is traced shallower instead: each band redraws what is
+    // not traced (the background, the metal, the finishing passes), so many bands cost more
+    // than the depth gains.
+    static constexpr int kMostBands = 8;
 
     StillSchedule() = default;
     explicit StillSchedule(const StillScheduleOptions& options) : options_(options) {}
 
     // A frame begins at `now_s`: the last one's view (`still`) or a new one (a restart).
     void begin_frame(bool still, double now_s);
-    // A frame's measured cost, at this frame's depth(): what the next deeper one is judged by.
+    // A frame's measured cost at its depth() (in bands: its dearest band's times the bands):
+    // what the next is judged by.
     void frame_drawn(double ms);
 
     // This frame's place in the still view: -1 moving, 0 the view's first (the moving view's
@@ -47,6 +53,8 @@ class StillSchedule {
     int index() const { return index_; }
     // The depth this frame traces to: 0 for a moving frame (the moving frames' own).
     int depth() const { return depth_; }
+    // In how many bands this frame is drawn (1: whole).
+    int bands() const { return bands_; }
     // Drawing more changes nothing: all its frames, or its time is up.
     bool settled() const { return settled_; }
     const StillScheduleOptions& options() const { return options_; }
@@ -58,10 +66,12 @@ class StillSchedule {
   private:
     // The depth the rule gives frame `index`, before the cost bound.
     int wanted_depth(int index) const;
+    void note_depth();  // deepest_ kept
 
     StillScheduleOptions options_;
     int index_ = -1;
     int depth_ = 0;
+    int bands_ = 1;
     bool settled_ = false;
     double started_s_ = 0.0;
     double settled_s_ = 0.0;

@@ -210,8 +210,8 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     if (sight_ == PieceSight::metal_sees_environment) {
         glm::dvec3 sum = environment_.radiance(l);
         for (const Light& light : shading_.lights) {
-            sum += light.colour *
-                   specular_lobe(l, direction_to_light(light, hit.point), shading_.h);
+            sum +=
+                light.colour * specular_lobe(l, direction_to_light(light, hit.point), shading_.h);
         }
         return weight * sum;
     }

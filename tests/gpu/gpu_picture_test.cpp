@@ -243,6 +243,66 @@ TEST(GpuPicture, AStillViewsFramesAfterItsFirstArePointSamples) {
     EXPECT_TRUE(gpu::gl_check("point samples test").ok());
 }
 
+// A still frame that costs more than a touch may wait is drawn in bands, one a frame: each
+// band adds its rows with its frame's weight, and the picture shown changes once the frame is
+// whole. Frame k clears the picture to its own grey; the frames report 8 ms per unit of depth,
+// so from the third frame on (the second measured) a frame at depth 16 takes 128 ms: 2 bands.
+TEST(GpuPicture, AStillFrameInBandsIsShownOnceWholeAndAddsEachRowOnce) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    const int n = 8;
+    const DisplayTransform display{ToneCurve::clip, 0.0};
+    auto made = gpu::HdrPicture::make(n, n,
+                                      {.samples = 1,
+                                       .display = display,
+                                       .glare = 0.0,
+                                       .still_frames = 64,
+                                       .still_depth = 16,
+                                       .still_frame_ms = 100.0});
+    ASSERT_TRUE(made.ok()) << made.error();
+    gpu::HdrPicture& hdr = made.value();
+    auto target = gpu::RenderTarget::make(n, n);
+    ASSERT_TRUE(target.ok()) << target.error();
+    const auto grey = [](int frame) { return 0.1 + 0.8 * ((frame * 7) % 11) / 10.0; };
+    // Every row of the picture shown is the mean of frames 0 .. frames-1.
+    const auto expect_mean_of = [&](int frames, const char* when) {
+        double mean = 0.0;
+        for (int f = 0; f < frames; ++f) mean += grey(f) / frames;
+        const int want = linear_to_srgb8(to_display(glm::dvec3(mean), display).x);
+        const Image out = target.value().read();
+        for (int y = 0; y < n; ++y) {
+            for (int x = 0; x < n; ++x) {
+                EXPECT_NEAR(linear_to_srgb8(out.at(x, y).x), want, 1) << when << ", row " << y;
+            }
+        }
+    };
+    int banded = 0;
+    bool partial_checked = false;
+    hdr.begin_frame(false, 0.0);
+    for (int drawn = 0; drawn < 200; ++drawn) {
+        hdr.begin_frame(true, 0.0);
+        const int frame = hdr.still_frames_drawn() - 1;
+        const int bands = hdr.still_schedule().bands();
+        if (frame == 13) break;
+        hdr.bind();
+        glClearColor(float(grey(frame)), 0.0f, 0.0f, 1.0f);
+        glClear(GL_COLOR_BUFFER_BIT);
+        ASSERT_TRUE(hdr.finish(target.value()).ok());
+        // Each band reports its share of the frame's cost.
+        hdr.frame_drawn(8.0 * hdr.still_frame().depth / bands);
+        if (bands > 1) ++banded;
+        // The first band of frame 12 leaves the picture shown as it was, 12 frames' mean.
+        if (frame == 12 && bands > 1 && hdr.target_region().width() == 0) {
+            expect_mean_of(12, "after the first band of frame 12");
+            partial_checked = true;
+        }
+    }
+    EXPECT_GT(banded, 10) << "frames drawn in bands";
+    EXPECT_TRUE(partial_checked);
+    expect_mean_of(13, "after frame 12's last band");
+    EXPECT_TRUE(gpu::gl_check("bands test").ok());
+}
+
 TEST(GpuPicture, AStillViewDeepensAsItsFramesAccumulateAndEndsWhenItsTimeIsUp) {
     auto ctx = gpu_test::context();
     ASSERT_TRUE(ctx.ok()) << ctx.error();

@@ -2,6 +2,7 @@
 // from the rule, its time, its frame count, and the cost bound that keeps a touch answered.
 #include <gtest/gtest.h>
 
+#include <utility>
 #include <vector>
 
 #include "gpu/still_schedule.hpp"
@@ -68,25 +69,46 @@ TEST(StillSchedule, ItSettlesWhenItsTimeIsUpAndATouchRestartsIt) {
     EXPECT_TRUE(s.settled());
 }
 
-TEST(StillSchedule, ADeeperFrameIsDrawnOnlyWhileItsCostStaysWithinTheBound) {
-    // 2 ms per unit of depth: 16 → 32 ms, 32 → 64 ms, 64 → 128 ms. Within 100 ms: up to 32.
-    StillSchedule s({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
-    const std::vector<int> d = depths(s, 2.0);
-    ASSERT_EQ(d.size(), 64u);
-    EXPECT_EQ(d[15], 16);
-    EXPECT_EQ(d[16], 32);
-    EXPECT_EQ(d[40], 32);
-    // 8 ms per unit: even 16 costs 128 ms; the first depth is kept, never less.
-    StillSchedule slow({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
-    for (int depth : depths(slow, 8.0)) EXPECT_EQ(depth, 16);
-    // No frame measured yet (the view's first is multisampled and does not count): no deeper
-    // frame is risked.
-    StillSchedule unmeasured({.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0});
-    unmeasured.begin_frame(false, 0.0);
-    for (int f = 0; f < 40; ++f) {
-        unmeasured.begin_frame(true, 0.0);
-        EXPECT_EQ(unmeasured.depth(), 16) << f;
+// The depths and bands of a still view whose frames cost `ms_per_depth` per unit of depth,
+// each frame one second apart: {depth, bands} per frame.
+std::vector<std::pair<int, int>> depths_and_bands(StillSchedule& s, double ms_per_depth,
+                                                  int frames) {
+    std::vector<std::pair<int, int>> out;
+    s.begin_frame(false, 0.0);
+    for (int f = 0; f < frames; ++f) {
+        s.begin_frame(true, f);
+        out.emplace_back(s.depth(), s.bands());
+        s.frame_drawn(ms_per_depth * s.depth());
     }
+    return out;
+}
+
+TEST(StillSchedule, AFrameLongerThanTheBoundIsDrawnInBandsAndTooManyBandsTraceShallower) {
+    const StillScheduleOptions bound{.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0};
+    // 2 ms per unit of depth: 16 → 32 ms and 32 → 64 ms whole; 64 → 128 ms, in 2 bands.
+    StillSchedule quick(bound);
+    auto d = depths_and_bands(quick, 2.0, 64);
+    EXPECT_EQ(d[15], std::make_pair(16, 1));
+    EXPECT_EQ(d[16], std::make_pair(32, 1));
+    EXPECT_EQ(d[40], std::make_pair(64, 2));
+    // 8 ms per unit: even 16 (128 ms) takes 2 bands, once a frame has been measured (the
+    // view's first is multisampled and not counted, the second no deeper than the first);
+    // 32 → 256 ms in 3; 64 → 512 ms in 6.
+    StillSchedule slow(bound);
+    d = depths_and_bands(slow, 8.0, 64);
+    EXPECT_EQ(d[0], std::make_pair(16, 1));
+    EXPECT_EQ(d[1], std::make_pair(16, 1));
+    EXPECT_EQ(d[2], std::make_pair(16, 2));
+    EXPECT_EQ(d[16], std::make_pair(32, 3));
+    EXPECT_EQ(d[40], std::make_pair(64, 6));
+    // 20 ms per unit: 64 would take 13 bands of 100 ms, more than kMostBands: 32 in 7.
+    StillSchedule slower(bound);
+    d = depths_and_bands(slower, 20.0, 64);
+    EXPECT_EQ(d[40], std::make_pair(32, 7));
+    // 80 ms per unit: 16 itself takes 13; never shallower than the first depth, in at most 8.
+    StillSchedule slowest(bound);
+    d = depths_and_bands(slowest, 80.0, 64);
+    EXPECT_EQ(d[40], std::make_pair(16, StillSchedule::kMostBands));
 }
 
 TEST(StillSchedule, OneFrameIsNoStillViewAndTheFrameCountEndsIt) {
