@@ -38,8 +38,9 @@ void StillSchedule::begin_frame(bool still, double now_s) {
     ++index_;
     depth_ = wanted_depth(index_);
     bands_ = 1;
-    // The view's first frame is the moving view's own, whole; without a bound or a measured
-    // frame, every frame is whole and no deeper than the first depth.
+    // The view's first frame is the moving view's own, whole. Without a bound every frame is
+    // whole and as deep as the rule says; with one, none is deeper than the first depth until a
+    // frame has been measured.
     if (index_ == 0 || options_.frame_ms <= 0.0) return note_depth();
     if (ms_per_depth_ <= 0.0) {
         depth_ = std::min(depth_, options_.depth);

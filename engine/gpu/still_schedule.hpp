@@ -34,9 +34,9 @@ class StillSchedule {
   public:
     // The first depth keeps its frames this long; then each doubling of the frames doubles it.
     static constexpr int kFramesAtFirstDepth = 16;
-    // A frame in more bands than this is traced shallower instead: each band redraws what is
-    // not traced (the background, the metal, the finishing passes), so many bands cost more
-    // than the depth gains.
+    // A frame in more bands than this is traced shallower instead: each band draws again what
+    // is not traced (its clear, the background, the stones' depth and the metal's passes), so
+    // many bands cost more than the depth gains.
     static constexpr int kMostBands = 8;
 
     StillSchedule() = default;

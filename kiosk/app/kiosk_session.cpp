@@ -538,7 +538,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         return std::optional<FrameRecord>(record);
     }
     record.draw_ms = (done_s - record.start_s) * 1000.0;
-    scene_picture_->frame_drawn(record.draw_ms);  // what a deeper still frame is judged by
+    scene_picture_->frame_drawn(record.draw_ms);  // what the next still frame is judged by
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
     if (oldest_unshown_input_s_ >= 0.0) {
         record.latency_ms = (done_s - oldest_unshown_input_s_) * 1000.0;

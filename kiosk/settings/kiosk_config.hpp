@@ -61,8 +61,8 @@ struct PictureConfig {
     int still_depth = 16;
     // ... deeper as they accumulate, to this (doubled each time the frames double) ...
     int still_depth_max = 64;
-    // ... while a still frame is expected to take at most this long (ms), the longest a touch
-    // waits for it (0: any).
+    // A still frame expected to take longer than this (ms) is drawn in bands, one a display
+    // frame: what a touch waits for (0: whole, whatever it costs).
     double still_frame_ms = 100.0;
     // Start view: the girdle's width as a share of the picture's height, as far as the whole
     // ring still fits (app/framing.hpp).
