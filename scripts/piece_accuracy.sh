@@ -6,6 +6,9 @@
 # Run from the repository root after building build/test.
 #   bash scripts/piece_accuracy.sh [OUT_DIR] [SPP] [PIECE ...]
 #   (default out/piece-accuracy, 16 samples, config/pieces/*.toml)
+# REFERENCE_FLAGS adds gemrender flags to the reference's command, e.g.
+# REFERENCE_FLAGS=--metal-sees-environment (the reference's metal drawn as the GPU's is).
+reference_flags=(${REFERENCE_FLAGS:-})
 set -euo pipefail
 cd "$(dirname "$0")/.."
 out=${1:-out/piece-accuracy}
@@ -21,7 +24,8 @@ for file in "${pieces[@]}"; do
   "$bin/render/gemrender" --piece "$file" --method trace --fire none --msaa 1 --still-frames 16 \
     --depth 8 "${view[@]}" --out "$out/$name-trace.png" > /dev/null
   "$bin/render/gemrender" --piece "$file" --method reference --spp "$spp" --depth 8 "${view[@]}" \
-    --out "$out/$name-reference.png" --coverage "$out/$name-mask.png" > /dev/null
+    "${reference_flags[@]}" --out "$out/$name-reference.png" --coverage "$out/$name-mask.png" \
+    > /dev/null
   printf '%-20s %s\n' "$name" \
     "$("$bin/tests/bench/compare_pictures" "$out/$name-trace.png" "$out/$name-reference.png" \
       "$out/$name-mask.png" --heat "$out/$name-heat.png")"
