@@ -5,7 +5,6 @@
 #include <gtest/gtest.h>
 #include <signal.h>
 
-#include <algorithm>
 #include <fstream>
 
 #include "e2e_fixture.hpp"
@@ -19,16 +18,6 @@ namespace fs = std::filesystem;
 using namespace std::chrono_literals;
 
 const fs::path kChainKey = fs::path(GEM_FIXTURES_DIR) / "signature" / "fixture.pub";
-
-// `text` with `from` (which it holds once) replaced; the 1-based line it was on.
-std::string replaced(const std::string& text, const std::string& from, const std::string& to,
-                     int* line) {
-    const auto at = text.find(from);
-    EXPECT_NE(at, std::string::npos) << from;
-    if (at == std::string::npos) return text;
-    *line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
-    return text.substr(0, at) + to + text.substr(at + from.size());
-}
 
 TEST(KioskConfig, ASyntaxErrorKeepsTheLastGoodConfigAndRefusesAnUnsignedDelivery) {
     auto sapphire = test_catalogue("oval-sapphire");

@@ -5,6 +5,7 @@
 #include <GLES3/gl3.h>
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <fstream>
@@ -70,6 +71,17 @@ std::string line_with(const std::string& log, const std::string& text) {
     if (at == std::string::npos) return "";
     const auto start = log.rfind('\n', at) + 1;
     return log.substr(start, log.find('\n', at) - start);
+}
+
+std::string replaced(const std::string& text, const std::string& from, const std::string& to,
+                     int* line) {
+    const auto at = text.find(from);
+    EXPECT_NE(at, std::string::npos) << from;
+    if (at == std::string::npos) return text;
+    if (line != nullptr) {
+        *line = 1 + static_cast<int>(std::count(text.begin(), text.begin() + at, '\n'));
+    }
+    return text.substr(0, at) + to + text.substr(at + from.size());
 }
 
 fs::path write_config(const fs::path& dir, const fs::path& catalogue, const std::string& extra) {

@@ -34,6 +34,10 @@ std::string read_text(const std::filesystem::path& file);
 void write_text(const std::filesystem::path& file, const std::string& text);
 // The line of the kiosk's `log` holding `text`, or "".
 std::string line_with(const std::string& log, const std::string& text);
+// `text` with `from` (which it must hold: a test failure else) replaced by `to`; `line`, when
+// given, gets the 1-based line it was on.
+std::string replaced(const std::string& text, const std::string& from, const std::string& to,
+                     int* line = nullptr);
 
 // Writes <dir>/gemkiosk.toml: headless kiosk of kWidth × kHeight drawing as fast as it can, a
 // black background, one light, no attract mode, no inertia, no cross-fade, the

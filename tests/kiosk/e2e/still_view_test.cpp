@@ -21,14 +21,8 @@ TEST(KioskStillView, AStillViewIsRefinedForTheSecondsItIsGiven) {
     const fs::path dir = fresh_dir("still-view-seconds");
     const fs::path config = write_config(dir, catalogue.value());
     // write_config's still view is 16 frames by count; here it is up to 1024, for 0.4 s.
-    std::string text = read_text(config);
-    for (const auto& [from, to] :
-         {std::pair<std::string, std::string>{"still_frames = 16\n", "still_frames = 1024\n"},
-          {"still_seconds = 0.0\n", "still_seconds = 0.4\n"}}) {
-        const auto at = text.find(from);
-        ASSERT_NE(at, std::string::npos) << from;
-        text.replace(at, from.size(), to);
-    }
+    std::string text = replaced(read_text(config), "still_frames = 16\n", "still_frames = 1024\n");
+    text = replaced(text, "still_seconds = 0.0\n", "still_seconds = 0.4\n");
     write_text(config, text);
     const Finished run =
         run_kiosk({GEMKIOSK_PATH, "--config", config.string(), "--seconds", "4"}, 60s);
