@@ -10,19 +10,25 @@
 namespace gem::gpu {
 namespace {
 
-// The depths of a still view's frames, one frame a second apart, each reported to cost
-// `ms_per_depth` per unit of its depth; until settled or `limit` frames.
+// A still view's frames, one a second apart, each reported to cost `ms_per_depth` per unit of
+// its depth: {depth, bands} of each until it settles or has `limit` frames.
+std::vector<std::pair<int, int>> frames_of(StillSchedule& s, double ms_per_depth = 1.0,
+                                           int limit = 2000) {
+    std::vector<std::pair<int, int>> out;
+    s.begin_frame(false, 0.0);  // moving
+    for (int f = 0; f < limit; ++f) {
+        s.begin_frame(true, f);
+        if (s.settled()) break;
+        out.emplace_back(s.depth(), s.bands());
+        s.frame_drawn(ms_per_depth * s.depth());
+    }
+    return out;
+}
+
+// Their depths alone.
 std::vector<int> depths(StillSchedule& s, double ms_per_depth = 1.0, int limit = 2000) {
     std::vector<int> out;
-    double t = 0.0;
-    s.begin_frame(false, t);  // moving
-    for (int f = 0; f < limit; ++f) {
-        s.begin_frame(true, t);
-        if (s.settled()) break;
-        out.push_back(s.depth());
-        s.frame_drawn(ms_per_depth * s.depth());
-        t += 1.0;
-    }
+    for (const auto& [depth, bands] : frames_of(s, ms_per_depth, limit)) out.push_back(depth);
     return out;
 }
 
@@ -69,25 +75,11 @@ TEST(StillSchedule, ItSettlesWhenItsTimeIsUpAndATouchRestartsIt) {
     EXPECT_TRUE(s.settled());
 }
 
-// The depths and bands of a still view whose frames cost `ms_per_depth` per unit of depth,
-// each frame one second apart: {depth, bands} per frame.
-std::vector<std::pair<int, int>> depths_and_bands(StillSchedule& s, double ms_per_depth,
-                                                  int frames) {
-    std::vector<std::pair<int, int>> out;
-    s.begin_frame(false, 0.0);
-    for (int f = 0; f < frames; ++f) {
-        s.begin_frame(true, f);
-        out.emplace_back(s.depth(), s.bands());
-        s.frame_drawn(ms_per_depth * s.depth());
-    }
-    return out;
-}
-
 TEST(StillSchedule, AFrameLongerThanTheBoundIsDrawnInBandsAndTooManyBandsTraceShallower) {
     const StillScheduleOptions bound{.frames = 64, .depth = 16, .depth_max = 64, .frame_ms = 100.0};
     // 2 ms per unit of depth: 16 → 32 ms and 32 → 64 ms whole; 64 → 128 ms, in 2 bands.
     StillSchedule quick(bound);
-    auto d = depths_and_bands(quick, 2.0, 64);
+    auto d = frames_of(quick, 2.0, 64);
     EXPECT_EQ(d[15], std::make_pair(16, 1));
     EXPECT_EQ(d[16], std::make_pair(32, 1));
     EXPECT_EQ(d[40], std::make_pair(64, 2));
@@ -95,7 +87,7 @@ TEST(StillSchedule, AFrameLongerThanTheBoundIsDrawnInBandsAndTooManyBandsTraceSh
     // view's first is multisampled and not counted, the second no deeper than the first);
     // 32 → 256 ms in 3; 64 → 512 ms in 6.
     StillSchedule slow(bound);
-    d = depths_and_bands(slow, 8.0, 64);
+    d = frames_of(slow, 8.0, 64);
     EXPECT_EQ(d[0], std::make_pair(16, 1));
     EXPECT_EQ(d[1], std::make_pair(16, 1));
     EXPECT_EQ(d[2], std::make_pair(16, 2));
@@ -103,11 +95,11 @@ TEST(StillSchedule, AFrameLongerThanTheBoundIsDrawnInBandsAndTooManyBandsTraceSh
     EXPECT_EQ(d[40], std::make_pair(64, 6));
     // 20 ms per unit: 64 would take 13 bands of 100 ms, more than kMostBands: 32 in 7.
     StillSchedule slower(bound);
-    d = depths_and_bands(slower, 20.0, 64);
+    d = frames_of(slower, 20.0, 64);
     EXPECT_EQ(d[40], std::make_pair(32, 7));
     // 80 ms per unit: 16 itself takes 13; never shallower than the first depth, in at most 8.
     StillSchedule slowest(bound);
-    d = depths_and_bands(slowest, 80.0, 64);
+    d = frames_of(slowest, 80.0, 64);
     EXPECT_EQ(d[40], std::make_pair(16, StillSchedule::kMostBands));
 }
 
