@@ -127,9 +127,10 @@ glm::dvec3 PieceTracer::onward(const Ray& ray, int from_stone, const glm::dvec3&
 // A ray that leaves the piece: the environment, and each light whose lobe it lies in (times
 // `k`, the shading's k_s for a first reflection and k_st for an exit) unless the piece stands
 // between it and the light (a convex stone's own facet blocks only when it faces away), as
-// Shader::light_specular has it for a loose stone.
+// Shader::light_specular has it for a loose stone. `piece_blocks` false: no part of the piece
+// blocks a light (PieceSight::metal_sees_environment, the GPU's metal).
 glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
-                                double k) const {
+                                double k, bool piece_blocks) const {
     glm::dvec3 sum = environment_.radiance(ray.direction);
     if (k == 0.0) return sum;
     for (const Light& light : shading_.lights) {
@@ -137,6 +138,10 @@ glm::dvec3 PieceTracer::escaped(const Ray& ray, int from_stone, const glm::dvec3
         const double lobe = specular_lobe(ray.direction, to_light, shading_.h);
         if (lobe == 0.0) continue;
         if (from_stone >= 0 && glm::dot(from_normal, to_light) < 0.0) continue;
+        if (!piece_blocks) {
+            sum += light.colour * (k * lobe);
+            continue;
+        }
         const Nearest block =
             nearest({ray.origin, to_light}, from_stone, sight_ != PieceSight::metal_only);
         const double reach = light.directional ? std::numeric_limits<double>::infinity()
@@ -205,18 +210,13 @@ glm::dvec3 PieceTracer::metal(const Ray& ray, const SurfaceHit& hit,
     const glm::dvec3 m = sample_ggx_normal(n, alpha, u1, u2);
     const GgxReflection reflected = ggx_reflect(glm::dvec3(piece_.metal.f0), n, v, m, alpha);
     if (reflected.weight == glm::dvec3(0.0)) return glm::dvec3(0.0);
-    const glm::dvec3& l = reflected.direction;
-    const glm::dvec3& weight = reflected.weight;
+    const Ray out{hit.point + kOffsetMm * face, reflected.direction};
+    // As the GPU's metal: what it reflects is the environment and the lights, nothing of the
+    // piece.
     if (sight_ == PieceSight::metal_sees_environment) {
-        glm::dvec3 sum = environment_.radiance(l);
-        for (const Light& light : shading_.lights) {
-            sum +=
-                light.colour * specular_lobe(l, direction_to_light(light, hit.point), shading_.h);
-        }
-        return weight * sum;
+        return reflected.weight * escaped(out, -1, glm::dvec3(0.0), 1.0, false);
     }
-    return onward({hit.point + kOffsetMm * face, l}, -1, glm::dvec3(0.0), 1.0, weight, iors,
-                  pass - 1, share, scratch);
+    return onward(out, -1, glm::dvec3(0.0), 1.0, reflected.weight, iors, pass - 1, share, scratch);
 }
 
 }  // namespace gem

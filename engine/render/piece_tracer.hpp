@@ -68,8 +68,8 @@ class PieceTracer {
     glm::dvec3 onward(const Ray& ray, int from_stone, const glm::dvec3& from_normal, double k,
                       const glm::dvec3& weight, const std::vector<double>& iors, int pass,
                       double share, Scratch& scratch) const;
-    glm::dvec3 escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal,
-                       double k) const;
+    glm::dvec3 escaped(const Ray& ray, int from_stone, const glm::dvec3& from_normal, double k,
+                       bool piece_blocks = true) const;
     glm::dvec3 metal(const Ray& ray, const SurfaceHit& hit, const std::vector<double>& iors,
                      int pass, double share, Scratch& scratch) const;
 
