@@ -101,7 +101,7 @@ std::vector<SightGroup> grouped(const std::vector<glm::dvec3>& centre,
         if (group != groups.end()) {
             group->stones.push_back(i);
         } else {
-            groups.push_back({centre[i], own, {i}});
+            groups.push_back({glm::dvec3(0.0), own, {i}});  // seen from: below
         }
     }
     for (SightGroup& g : groups) {
@@ -126,11 +126,13 @@ std::vector<SightGroup> sight_groups(const Piece& piece) {
     // Each stone's middle, the centre of its box in the piece's frame, and its radius about it:
     // what the stone is, whatever frame its file gave it (a glTF stone's origin may sit
     // off its girdle's centre).
+    std::vector<glm::dvec3> girdle(piece.kinds.size());  // identical stones share their kind's
+    for (std::size_t k = 0; k < piece.kinds.size(); ++k) girdle[k] = girdle_middle(piece.kinds[k]);
     std::vector<glm::dvec3> centre(piece.stones.size());
     std::vector<glm::dvec3> seen_from(piece.stones.size());
     std::vector<double> radius(piece.stones.size(), 0.0);
     for (std::size_t i = 0; i < piece.stones.size(); ++i) {
-        seen_from[i] = piece.stones[i].placement.to_piece(girdle_middle(piece.stone_of(i)));
+        seen_from[i] = piece.stones[i].placement.to_piece(girdle[piece.stones[i].kind]);
         glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi = -lo;
         for (const glm::dvec3& v : piece.stone_of(i).vertices) {
             const glm::dvec3 p = piece.stones[i].placement.to_piece(v);
