@@ -8,8 +8,8 @@
 #   (default out/piece-accuracy, 16 samples, config/pieces/*.toml)
 # REFERENCE_FLAGS adds gemrender flags to the reference's command, e.g.
 # REFERENCE_FLAGS=--metal-sees-environment (the reference's metal drawn as the GPU's is).
-reference_flags=(${REFERENCE_FLAGS:-})
 set -euo pipefail
+reference_flags=(${REFERENCE_FLAGS:-})
 cd "$(dirname "$0")/.."
 out=${1:-out/piece-accuracy}
 spp=${2:-16}

@@ -180,20 +180,23 @@ gem::ImageError error_of(gem::Image picture, const gem::Image& reference_display
 }
 
 // The kiosk's still view of `s`, drawn frame by frame up to the last checkpoint, compared with
-// `reference_display` at each.
+// `reference_display` at each. Its picture holds as many frames as the kiosk's: their count
+// sets the strata of the still frames' wavelengths (optics/spectrum.hpp, StillSpectrum), and so
+// what the first frames trace.
+constexpr int kKioskStillFrames = 1024;  // picture.still_frames (kiosk/settings/kiosk_config.hpp)
 void still_view_by_frames(const StillScene& s, const gem::Image& reference_display,
                           const std::vector<int>& checkpoints, int depth, double min_weight,
-                          int still_depth, int still_depth_max) {
+                          int msaa, int still_depth, int still_depth_max) {
     const gem::Scene scene = scene_of(s);
     const gem::Environment environment = must(gem::build_environment(scene));
     auto renderer =
         trace_renderer(scene, environment, depth, min_weight, TraceDispersion::spectral);
     auto target = must(gem::gpu::RenderTarget::make(s.size, s.size));
     auto hdr = must(gem::gpu::HdrPicture::make(s.size, s.size,
-                                               {.samples = 4,
+                                               {.samples = msaa,
                                                 .display = {},
                                                 .glare = 0.0,
-                                                .still_frames = checkpoints.back(),
+                                                .still_frames = kKioskStillFrames,
                                                 .spectral = true,
                                                 .still_depth = still_depth,
                                                 .still_depth_max = still_depth_max}));
@@ -312,6 +315,7 @@ int main(int argc, char** argv) {
         ->check(CLI::Range(0, 64));
     CLI11_PARSE(app, argc, argv);
     std::sort(checkpoints.begin(), checkpoints.end());
+    checkpoints.erase(std::unique(checkpoints.begin(), checkpoints.end()), checkpoints.end());
     auto context = must(gem::gpu::EglContext::headless());
     std::printf("GL: %s\n", context.description().c_str());
 
@@ -379,7 +383,7 @@ int main(int argc, char** argv) {
                 ref, std::filesystem::path(images) / (std::string(s.name) + "-reference.png")));
         }
         if (!checkpoints.empty()) {
-            still_view_by_frames(s, ref, checkpoints, depth, min_weight, still_depth,
+            still_view_by_frames(s, ref, checkpoints, depth, min_weight, msaa, still_depth,
                                  still_depth_max);
             continue;
         }

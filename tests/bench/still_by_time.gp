@@ -18,17 +18,17 @@
 # then 64). Measured 2026-12-05.
 if (!exists("out")) out = 'docs/images/accuracy'
 $diamond_here << EOD
-2.1 6.66
-5.1 4.89
-10.2 3.38
-20.0 2.51
+2.1 6.70
+5.1 4.87
+10.2 3.40
+20.0 2.49
 EOD
 $diamond_whole << EOD
 2.0 7.43
 3.4 6.38
 6.2 5.90
 11.8 5.52
-20.1 5.32
+20.1 5.33
 EOD
 $diamond_fast << EOD
 0.14 7.43
