@@ -248,12 +248,9 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
         // A band adds its rows only: each row has then had each frame of the view once.
-        PixelRect rows = mean_damage_.rewrite(content, whole);
-        if (const std::optional<PixelRect> b = band()) {
-            rows = PixelRect{std::max(rows.x0, b->x0), std::max(rows.y0, b->y0),
-                             std::min(rows.x1, b->x1), std::min(rows.y1, b->y1)};
-        }
-        scissor(rows);
+        const PixelRect rewritten = mean_damage_.rewrite(content, whole);
+        const std::optional<PixelRect> rows = band();
+        scissor(rows ? intersected(rewritten, *rows) : rewritten);
         glDisable(GL_DEPTH_TEST);
         glEnable(GL_BLEND);
         glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(schedule_.index() + 1));

@@ -31,10 +31,15 @@ inline PixelRect united(const PixelRect& a, const PixelRect& b) {
     return {std::min(a.x0, b.x0), std::min(a.y0, b.y0), std::max(a.x1, b.x1), std::max(a.y1, b.y1)};
 }
 
-inline PixelRect clamped(const PixelRect& r, int width, int height) {
-    PixelRect c{std::clamp(r.x0, 0, width), std::clamp(r.y0, 0, height), std::clamp(r.x1, 0, width),
-                std::clamp(r.y1, 0, height)};
+// The pixels in both (none: an empty rectangle).
+inline PixelRect intersected(const PixelRect& a, const PixelRect& b) {
+    const PixelRect c{std::max(a.x0, b.x0), std::max(a.y0, b.y0), std::min(a.x1, b.x1),
+                      std::min(a.y1, b.y1)};
     return c.empty() ? PixelRect{} : c;
+}
+
+inline PixelRect clamped(const PixelRect& r, int width, int height) {
+    return intersected(r, PixelRect::whole(width, height));
 }
 
 // One side of affected_by(): the output texels [lo, hi) whose taps reach input texels [a, b).

@@ -61,7 +61,7 @@ TEST(GpuPixelRect, AnOutputTexelThatReadsTheRegionIsInItsAffectedRectangle) {
     }
 }
 
-TEST(GpuPixelRect, UnitedAndClampedKeepEveryPixelOfBoth) {
+TEST(GpuPixelRect, UnitedClampedAndIntersectedKeepThePixelsTheyShould) {
     const PixelRect a{10, 20, 30, 40}, b{25, 5, 60, 22};
     EXPECT_EQ(united(a, b), (PixelRect{10, 5, 60, 40}));
     EXPECT_EQ(united(a, PixelRect{}), a);
@@ -69,6 +69,9 @@ TEST(GpuPixelRect, UnitedAndClampedKeepEveryPixelOfBoth) {
     EXPECT_EQ(clamped({-5, -5, 8, 300}, 100, 50), (PixelRect{0, 0, 8, 50}));
     EXPECT_TRUE(clamped({120, 0, 130, 10}, 100, 50).empty());
     EXPECT_EQ((PixelRect{2, 3, 12, 8}).area(), 50);
+    // The pixels in both: x 25..30, y 20..22; apart, none.
+    EXPECT_EQ(intersected(a, b), (PixelRect{25, 20, 30, 22}));
+    EXPECT_TRUE(intersected(a, PixelRect{40, 0, 50, 10}).empty());
 }
 
 TEST(GpuPixelRect, ASurfaceRewritesItsLastContentAndItsNewOneWholeWhenUnknown) {
