@@ -57,9 +57,7 @@ class StillSchedule {
     int bands() const { return bands_; }
     // Drawing more changes nothing: all its frames, or its time is up.
     bool settled() const { return settled_; }
-    const StillScheduleOptions& options() const { return options_; }
-    // This view's first frame began at started_s(); it settled after settled_after_s().
-    double started_s() const { return started_s_; }
+    // How long after its first frame began this view settled.
     double settled_after_s() const { return settled_s_ - started_s_; }
     int deepest() const { return deepest_; }  // the deepest frame of this view
 
