@@ -128,6 +128,16 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         auto ring = RingRenderer::make(*metal, *r.environment_cube_);
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
+        // In a still view the metal sees the piece, its own metal and stones, as the
+        // reference's does.
+        std::vector<PlacedStone> placed;
+        for (std::size_t i = 0; i < r.frames_.size(); ++i) {
+            placed.push_back({kinds[r.kinds_[i]], r.frames_[i].placement, &r.frames_[i].material});
+        }
+        auto sight = PieceSight::make(sight_mesh(*metal, placed));
+        if (!sight) return Error{"frame renderer: " + sight.error()};
+        auto sees = r.ring_->see_piece(std::move(sight).value());
+        if (!sees) return Error{sees.error()};
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         r.ring_radius_mm_ = metal->radius_mm();
         for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
@@ -266,7 +276,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     if (!depth) return Error{depth.error()};
     passed(stats.stone_depth_ms);
     if (ring_) {
-        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading);
+        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, still.index);
         if (!ok) return Error{ok.error()};
         passed(stats.metal_ms);
     }

@@ -24,6 +24,9 @@ struct StillFrame {
     // The depth the trace follows in this frame where deeper than its own
     // (TraceSettings::max_depth); 0: its own.
     int depth = 0;
+    // Its number in the still view (0 its first), by which its stochastic samples differ
+    // (the metal's reflected rays, metal_sight.glsl); -1 while the view moves.
+    int index = -1;
 };
 
 struct StoneFrame {

@@ -154,6 +154,7 @@ StillFrame HdrPicture::still_frame() const {
     if (!accumulating()) return still;
     if (spectrum_) still.wavelengths = &spectrum_->frame(schedule_.index());
     still.depth = schedule_.depth();
+    still.index = schedule_.index();
     return still;
 }
 

@@ -8,7 +8,7 @@
 //   - the environment BRDF, scale and bias by (n·v, roughness): a small table integrated on
 //     the CPU (environment_brdf_table), looked up bilinearly.
 // The metal's environment is made once with the frame, since the environment cube does not
-// change; the lights, which do, are shaded analytically (ring.frag).
+// change; the lights, which do, are shaded analytically (metal.glsl).
 
 #include <memory>
 

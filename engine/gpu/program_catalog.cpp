@@ -43,7 +43,11 @@ std::vector<ProgramSpec> all_program_specs() {
          {},
          kLightCountBits | kSpecularPowerBits},
         // The ring's metal, physically based (ring_renderer.hpp).
-        {"ring", {"ring.vert"}, {"ring.frag"}, {}, kLightCountBits},
+        {"ring",
+         {"ring.vert"},
+         {"metal.glsl", "metal_sight.glsl", "ring.frag"},
+         {},
+         kLightCountBits},
         // The environment filtered by the metal's lobe (metal_environment.hpp).
         {"metal_filter", {"fullscreen.vert"}, {"metal_filter.frag"}, {}},
         // The picture from HDR radiance to the display: glare pyramid, tone curve

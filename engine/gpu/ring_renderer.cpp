@@ -67,6 +67,7 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
     if (!metal_environment) return Error{"ring renderer: " + metal_environment.error()};
     RingRenderer r(std::move(ring), std::move(background).value(),
                    std::move(metal_environment).value());
+    r.sharp_ = &environment;
     r.f0_ = mesh.f0;
     r.roughness_ = std::clamp(mesh.roughness, 0.0f, 1.0f);
     r.radius_mm_ = mesh.radius_mm();
@@ -93,16 +94,24 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
     return r;
 }
 
-void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye,
-                             bool eye_at_infinity, const ShadingSettings& lights,
-                             bool cull_back) const {
-    const Program& ring = *ring_.find(light_count_feature(lights.lights));
+Result<bool> RingRenderer::see_piece(PieceSight sight) {
+    ProgramVariants ring("ring", {"METAL_SEES_PIECE"});
+    auto built = ring.build_every_light_count(0, [](const Program&) {});
+    if (!built) return Error{built.error()};
+    ring_sees_piece_ = std::move(ring);
+    sight_ = std::move(sight);
+    return true;
+}
+
+void RingRenderer::draw_mesh(const Program& ring, const glm::mat4& view_projection,
+                             const glm::vec3& eye, bool eye_at_infinity,
+                             const ShadingSettings& lights, bool cull_back) const {
     ring.use();
     ring.set("u_view_projection", view_projection);
     ring.set("u_eye", eye);
     ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
     ring.set("u_f0", f0_);
-    // Constant over the mesh: the alphas of ring.frag's lobes and a light lobe's solid angle.
+    // Constant over the mesh: the alphas of metal.glsl's lobes and a light lobe's solid angle.
     const double alpha = ggx_alpha(roughness_);
     ring.set("u_roughness", roughness_);
     ring.set("u_alpha", static_cast<float>(alpha));
@@ -133,18 +142,47 @@ void RingRenderer::draw_mesh(const glm::mat4& view_projection, const glm::vec3& 
     glDisable(GL_CULL_FACE);
 }
 
+void RingRenderer::set_sight(const Program& ring, const ShadingSettings& lights,
+                             int still_sample) const {
+    ring.use();
+    glActiveTexture(GL_TEXTURE2);
+    glBindTexture(GL_TEXTURE_2D, sight_->nodes());
+    ring.set("u_bvh_nodes", 2);
+    glActiveTexture(GL_TEXTURE3);
+    glBindTexture(GL_TEXTURE_2D, sight_->triangles());
+    ring.set("u_bvh_triangles", 3);
+    glActiveTexture(GL_TEXTURE4);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, sharp_->texture());
+    ring.set("u_environment_sharp", 4);
+    glActiveTexture(GL_TEXTURE0);
+    ring.set("u_h", static_cast<float>(lights.h));
+    ring.set("u_k_s", static_cast<float>(lights.k_s));
+    ring.set("u_k_st", static_cast<float>(lights.k_st));
+    ring.set("u_sample", still_sample);
+    // Far above a float's rounding of the metal's millimetres, far below a pixel.
+    ring.set("u_ray_offset_mm", static_cast<float>(2e-5 * std::max(radius_mm_, 1.0)));
+}
+
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
-                                const ShadingSettings& lights_from) const {
+                                const ShadingSettings& lights_from, int still_sample) const {
     if (index_count_ == 0) return true;
     // Orthographic: every pixel looks along forward, so the eye is a direction (toward it).
     const bool at_infinity = camera.orthographic();
     const glm::vec3 eye = at_infinity ? glm::vec3(-camera.forward())
                                       : glm::vec3(-camera.forward() * camera.distance());
+    const glm::mat4 vp = view_projection(camera, scene_radius_mm);
+    const std::uint32_t lights = light_count_feature(lights_from.lights);
     // Closed solids wound counter-clockwise from outside: their back faces lie behind their
     // front ones, and shading them first only to be overdrawn cost a third of a halo ring's
     // metal pass on llvmpipe (bench_pieces).
-    draw_mesh(view_projection(camera, scene_radius_mm), eye, at_infinity, lights_from, closed_);
-    return gl_check("ring pass");
+    if (!sight_ || still_sample < 0 || sight_->triangle_count() == 0) {
+        draw_mesh(*ring_.find(lights), vp, eye, at_infinity, lights_from, closed_);
+        return gl_check("ring pass");
+    }
+    const Program& ring = *ring_sees_piece_.find(lights);
+    set_sight(ring, lights_from, still_sample);
+    draw_mesh(ring, vp, eye, at_infinity, lights_from, closed_);
+    return gl_check("ring pass (seeing its piece)");
 }
 
 Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& background,
@@ -201,7 +239,8 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
         if (index_count_ > 0) {
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
-            draw_mesh(cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
+            draw_mesh(*ring_.find(light_count_feature(lights_from.lights)),
+                      cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
                       false, lights_from, false);
         }
     }

@@ -6,9 +6,12 @@
 // (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
 // from the stone's centre (docs/design.md, "Jewellery").
 
+#include <optional>
+
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/metal_environment.hpp"
+#include "gpu/piece_sight.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
 #include "gpu/ring_mesh.hpp"
@@ -31,11 +34,17 @@ class RingRenderer {
     // The metal reflects `environment`, which must outlive the renderer.
     static Result<RingRenderer> make(const MetalMesh& mesh, const EnvironmentCube& environment);
 
+    // From now on the metal of a still view's frames sees `sight`, its own piece
+    // (metal_sight.glsl), and not only the environment.
+    Result<bool> see_piece(PieceSight sight);
+
     // Draws the ring into the bound framebuffer with depth test and depth write (the stone
     // layer has written its depth already), opaque. Uses view_projection(camera,
-    // scene_radius_mm), so the ring must lie inside that sphere.
+    // scene_radius_mm), so the ring must lie inside that sphere. `still_sample`: the frame's
+    // number in a still view, whose reflected rays follow the piece (see_piece()); -1 while the
+    // view moves, which draws the split sum alone.
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
-                      const ShadingSettings& lights_from) const;
+                      const ShadingSettings& lights_from, int still_sample = -1) const;
 
     // Renders background (the environment) + ring into `target`'s six faces as seen from
     // `centre` (perspective 90° per face; the stone's centre, or a group of stones'). `target`
@@ -47,10 +56,16 @@ class RingRenderer {
 
   private:
     RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment);
-    void draw_mesh(const glm::mat4& view_projection, const glm::vec3& eye, bool eye_at_infinity,
-                   const ShadingSettings& lights, bool cull_back) const;
+    void draw_mesh(const Program& ring, const glm::mat4& view_projection, const glm::vec3& eye,
+                   bool eye_at_infinity, const ShadingSettings& lights, bool cull_back) const;
+    // The uniforms and textures of a metal that sees its piece (metal_sight.glsl).
+    void set_sight(const Program& ring, const ShadingSettings& lights, int still_sample) const;
 
     ProgramVariants ring_;  // one per light count, all built by make()
+    ProgramVariants
+        ring_sees_piece_;  // ... and seeing its piece (METAL_SEES_PIECE), by see_piece()
+    std::optional<PieceSight> sight_;
+    const EnvironmentCube* sharp_ = nullptr;  // the environment unfiltered
     Program background_;
     MetalEnvironment environment_;
     VertexArray vertex_array_;

@@ -1,6 +1,6 @@
-// Non-convex stones: the facet triangles in a bounding volume hierarchy (median split on the
-// longest centroid axis, a flat node array built once), traversed with a fixed-size stack so
-// a query allocates nothing. Triangles are tested with the watertight test (ray_triangle.hpp).
+// Non-convex stones: the facet triangles in a bounding volume hierarchy (bvh_build.hpp),
+// traversed with a fixed-size stack so a query allocates nothing. Triangles are tested with the
+// watertight test (ray_triangle.hpp).
 //
 // Self-intersection: a ray that leaves a facet is never tested against that facet again. A
 // straight line crosses a plane at most once, so this is exact for planar facets and needs no
@@ -15,9 +15,9 @@
 #include <cassert>
 #include <cmath>
 #include <limits>
-#include <numeric>
 #include <vector>
 
+#include "trace/bvh_build.hpp"
 #include "trace/intersector.hpp"
 #include "trace/ray_triangle.hpp"
 
@@ -28,12 +28,6 @@ struct TriangleRecord {
     glm::dvec3 v0, v1, v2;
     glm::dvec3 normal;  // the facet's outward normal, for entering / leaving
     std::uint32_t facet;
-};
-
-struct Node {
-    glm::dvec3 lo, hi;
-    std::uint32_t first = 0;  // inner: index of the right child (left is next); leaf: triangle
-    std::uint32_t count = 0;  // triangles in a leaf, 0 for an inner node
 };
 
 constexpr std::uint32_t kLeafSize = 4;
@@ -59,12 +53,13 @@ class BvhIntersector final : public Intersector {
             records.push_back(r);
         }
         epsilon_ = 1e-9 * glm::length(hi - lo);
-        std::vector<std::uint32_t> order(records.size());
-        std::iota(order.begin(), order.end(), 0u);
-        nodes_.reserve(2 * records.size() / kLeafSize + 2);
-        build(records, order, 0, static_cast<std::uint32_t>(order.size()), 0);
+        std::vector<TriangleCorners> corners;
+        corners.reserve(records.size());
+        for (const TriangleRecord& r : records) corners.push_back({r.v0, r.v1, r.v2});
+        Bvh bvh = build_bvh(corners, kLeafSize, kStackSize - 2, epsilon_);
+        nodes_ = std::move(bvh.nodes);
         triangles_.reserve(records.size());
-        for (std::uint32_t i : order) triangles_.push_back(records[i]);
+        for (std::uint32_t i : bvh.order) triangles_.push_back(records[i]);
     }
 
     bool next_entry(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
@@ -81,48 +76,6 @@ class BvhIntersector final : public Intersector {
     bool can_reenter() const override { return true; }
 
   private:
-    // Builds the subtree over order[begin, end); returns its node index.
-    std::uint32_t build(const std::vector<TriangleRecord>& records,
-                        std::vector<std::uint32_t>& order, std::uint32_t begin, std::uint32_t end,
-                        int depth) {
-        const auto index = static_cast<std::uint32_t>(nodes_.size());
-        nodes_.emplace_back();
-        glm::dvec3 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-        glm::dvec3 clo = lo, chi = hi;  // centroid bounds
-        for (std::uint32_t i = begin; i < end; ++i) {
-            const TriangleRecord& r = records[order[i]];
-            lo = glm::min(glm::min(lo, r.v0), glm::min(r.v1, r.v2));
-            hi = glm::max(glm::max(hi, r.v0), glm::max(r.v1, r.v2));
-            const glm::dvec3 c = (r.v0 + r.v1 + r.v2) / 3.0;
-            clo = glm::min(clo, c);
-            chi = glm::max(chi, c);
-        }
-        // Padding keeps the box test conservative for rays grazing a box face.
-        nodes_[index].lo = lo - glm::dvec3(epsilon_);
-        nodes_[index].hi = hi + glm::dvec3(epsilon_);
-        const glm::dvec3 extent = chi - clo;
-        if (end - begin <= kLeafSize || depth >= kStackSize - 2 ||
-            std::max({extent.x, extent.y, extent.z}) <= 0.0) {
-            nodes_[index].first = begin;
-            nodes_[index].count = end - begin;
-            return index;
-        }
-        const int axis =
-            extent.x > extent.y ? (extent.x > extent.z ? 0 : 2) : (extent.y > extent.z ? 1 : 2);
-        const std::uint32_t mid = begin + (end - begin) / 2;
-        std::nth_element(order.begin() + begin, order.begin() + mid, order.begin() + end,
-                         [&](std::uint32_t a, std::uint32_t b) {
-                             const TriangleRecord& ra = records[a];
-                             const TriangleRecord& rb = records[b];
-                             return ra.v0[axis] + ra.v1[axis] + ra.v2[axis] <
-                                    rb.v0[axis] + rb.v1[axis] + rb.v2[axis];
-                         });
-        build(records, order, begin, mid, depth + 1);
-        const std::uint32_t right = build(records, order, mid, end, depth + 1);
-        nodes_[index].first = right;
-        return index;
-    }
-
     // Nearest hit on a triangle whose facet normal n has sign(n·d) == side.
     bool nearest(const glm::dvec3& origin, const glm::dvec3& direction, std::uint32_t from_facet,
                  double side, SurfaceHit& hit) const {
@@ -139,7 +92,7 @@ class BvhIntersector final : public Intersector {
         int top = 0;
         stack[top++] = 0;
         while (top > 0) {
-            const Node& node = nodes_[stack[--top]];
+            const BvhNode& node = nodes_[stack[--top]];
             const glm::dvec3 t0 = (node.lo - origin) * inv;
             const glm::dvec3 t1 = (node.hi - origin) * inv;
             const glm::dvec3 near = glm::min(t0, t1);
@@ -186,7 +139,7 @@ class BvhIntersector final : public Intersector {
         int top = 0;
         stack[top++] = 0;
         while (top > 0) {
-            const Node& node = nodes_[stack[--top]];
+            const BvhNode& node = nodes_[stack[--top]];
             if (glm::any(glm::lessThan(origin, node.lo)) ||
                 glm::any(glm::greaterThan(origin, node.hi))) {
                 continue;
@@ -224,7 +177,7 @@ class BvhIntersector final : public Intersector {
         return glm::dot(p - a, inward) >= -epsilon_ * glm::length(inward);
     }
 
-    std::vector<Node> nodes_;
+    std::vector<BvhNode> nodes_;
     std::vector<TriangleRecord> triangles_;
     double epsilon_ = 0.0;
 };

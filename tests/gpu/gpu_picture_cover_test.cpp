@@ -92,7 +92,9 @@ TEST(GpuPictureCover, AroundThePieceEachFrameIsThePictureDrawnWhole) {
                 jittered.shift += whole.value().jitter_ndc();
                 const Camera c = Camera::make(jittered, radius, w, h).value();
                 whole.value().bind();
-                ASSERT_TRUE(renderer.value().render(c, gpu::FrameWait::frame).ok());
+                ASSERT_TRUE(renderer.value()
+                                .render(c, gpu::FrameWait::frame, whole.value().still_frame())
+                                .ok());
                 ASSERT_TRUE(whole.value().finish(whole_target.value()).ok());
                 if (glare == 0.0) {
                     smallest_region =

@@ -46,7 +46,7 @@ double quadrature_reflectance(double n_dot_v, double roughness, double f0) {
     return sum * (0.5 * kPi / kPolar) * (2.0 * kPi / kAzimuth);
 }
 
-// Karis, "Physically Based Shading on Mobile" (2014): the fit ring.frag used, as F0·a + b.
+// Karis, "Physically Based Shading on Mobile" (2014): the fit the metal's shader used, as F0·a + b.
 EnvironmentBrdf karis_mobile_fit(double n_dot_v, double roughness) {
     const double r0 = roughness * -1.0 + 1.0, r1 = roughness * -0.0275 + 0.0425;
     const double r2 = roughness * -0.572 + 1.04, r3 = roughness * 0.022 - 0.04;

@@ -20,9 +20,11 @@ TEST(KioskStillView, AStillViewIsRefinedForTheSecondsItIsGiven) {
     ASSERT_TRUE(catalogue.ok()) << catalogue.error();
     const fs::path dir = fresh_dir("still-view-seconds");
     const fs::path config = write_config(dir, catalogue.value());
-    // write_config's still view is 16 frames by count; here it is up to 1024, for 0.4 s.
+    // write_config's still view is 16 frames by count; here it is up to 1024, for 1 s. (Its
+    // first frame is the first whose metal follows its reflections through the piece, and
+    // llvmpipe builds that program as it first draws it: 0.2 to 0.4 s here.)
     std::string text = replaced(read_text(config), "still_frames = 16\n", "still_frames = 1024\n");
-    text = replaced(text, "still_seconds = 0.0\n", "still_seconds = 0.4\n");
+    text = replaced(text, "still_seconds = 0.0\n", "still_seconds = 1.0\n");
     write_text(config, text);
     const Finished run =
         run_kiosk({GEMKIOSK_PATH, "--config", config.string(), "--seconds", "4"}, 60s);
@@ -37,11 +39,11 @@ TEST(KioskStillView, AStillViewIsRefinedForTheSecondsItIsGiven) {
         << line;
     std::printf("%s\n", line.c_str());
     EXPECT_GE(frames, 2) << line;
-    // Settled by its time, a frame or so after 0.4 s (the line rounds to a tenth), unless a
+    // Settled by its time, a frame or so after 1 s (the line rounds to a tenth), unless a
     // machine this fast drew all 1024 frames first.
     if (frames < 1024) {
-        EXPECT_GE(seconds, 0.35) << line;
-        EXPECT_LE(seconds, 1.5) << line;
+        EXPECT_GE(seconds, 0.95) << line;
+        EXPECT_LE(seconds, 2.1) << line;
     }
 }
 
