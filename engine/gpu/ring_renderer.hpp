@@ -41,8 +41,8 @@ class RingRenderer {
     // Draws the ring into the bound framebuffer with depth test and depth write (the stone
     // layer has written its depth already), opaque. Uses view_projection(camera,
     // scene_radius_mm), so the ring must lie inside that sphere. `still_sample`: the frame's
-    // number in a still view, whose reflected rays follow the piece (see_piece()); -1 while the
-    // view moves, which draws the split sum alone.
+    // number in a still view, whose reflected rays follow the piece (see_piece()) from its
+    // second frame on; -1 while the view moves, which draws the split sum alone.
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
                       const ShadingSettings& lights_from, int still_sample = -1) const;
 

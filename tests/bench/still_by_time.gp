@@ -10,51 +10,36 @@
 # and the second (x) at which the kiosk had drawn that many, at 1920×1080 on the 2-core build
 # machine (llvmpipe): its line "still view refined: N frames in T s, to depth D" with
 # picture.still_seconds 2, 5, 10 and 20 (the shipped config, render.method "trace", a catalogue
-# of the one piece). "Whole frames": the same kiosk when a still frame had to be drawn whole
-# within picture.still_frame_ms, so that on this machine it stayed at depth 16 (88 ms the
-# diamond's frame, 132 ms the halo's): the frame counts from its --stats CSV. "A GPU ten times
-# faster": those frame costs a tenth, each deeper frame dearer in proportion to its depth,
-# every frame within 100 ms, so the still frames deepen as gpu/still_schedule.hpp says (16, 32,
-# then 64). Measured 2026-12-05.
+# of the one piece: the diamond in its parametric platinum ring, or the halo). A still frame
+# there traces its stones and, from the second on, its metal's reflections of the piece
+# (metal_sight.glsl). "A GPU ten times faster": the kiosk's whole still frames' costs a tenth
+# (the diamond's 238 ms at depth 16, of which its ring's reflections about 150; the halo's
+# 950 ms, of which 715), each deeper frame's stones dearer in proportion to the depth, so the
+# still frames deepen as gpu/still_schedule.hpp says (16, 32, then 64). Measured 2026-12-05.
 if (!exists("out")) out = 'docs/images/accuracy'
 $diamond_here << EOD
-2.1 6.70
-5.1 4.87
-10.2 3.40
-20.0 2.49
-EOD
-$diamond_whole << EOD
-2.0 7.43
-3.4 6.38
-6.2 5.90
-11.8 5.52
-20.1 5.33
+2.2 8.27
+5.1 6.89
+10.2 4.97
+20.4 3.29
 EOD
 $diamond_fast << EOD
-0.14 7.43
-0.42 5.12
-1.55 3.29
-3.80 2.20
-8.3 1.65
-17.3 1.36
-20.0 1.31
+2.0 3.56
+5.0 2.35
+10.0 1.77
+20.0 1.43
 EOD
 $halo_here << EOD
-2.1 6.46
-5.0 6.17
-10.2 6.07
-20.2 5.93
-EOD
-$halo_whole << EOD
-2.3 6.41
-8.6 6.25
-20.1 6.16
+2.0 6.47
+5.5 5.22
+10.7 4.60
+20.6 3.98
 EOD
 $halo_fast << EOD
-0.21 6.41
-2.31 6.00
-12.4 5.84
-20.0 5.83
+1.6 4.14
+4.7 3.45
+9.5 3.20
+19.2 3.12
 EOD
 set terminal pngcairo size 900,460 font 'DejaVu Sans,11' linewidth 1.5
 set output out.'/still-view-by-time.png'
@@ -63,13 +48,11 @@ set logscale xy
 set format y '%g'
 set ytics (1, 1.5, 2, 3, 5, 7, 10)
 set yrange [1:10]
-set xrange [0.1:25]
+set xrange [1:25]
 set xlabel 'seconds of stillness (the kiosk at 1920×1080)'
 set ylabel 'mean ΔE00 against the spectral reference'
 set key outside right top
 plot $diamond_here w lp pt 7 lc rgb '#1f77b4' t 'diamond, this machine', \
-     $diamond_whole w lp pt 7 dt 3 lc rgb '#9ecae1' t 'diamond, this machine, whole frames', \
      $diamond_fast w lp pt 6 dt 2 lc rgb '#1f77b4' t 'diamond, a GPU 10× faster', \
      $halo_here w lp pt 5 lc rgb '#d62728' t 'halo, this machine', \
-     $halo_whole w lp pt 5 dt 3 lc rgb '#fc9272' t 'halo, this machine, whole frames', \
      $halo_fast w lp pt 4 dt 2 lc rgb '#d62728' t 'halo, a GPU 10× faster'

@@ -1,22 +1,23 @@
 // What the metal sees of its own piece, in a still view's frames (ring_renderer.hpp): the split
 // sum (metal.glsl) assumes the metal sees only the environment. Where it sees its piece, one
 // reflected ray, drawn from GGX as the reference draws it (Walter eq. 35-38) and followed
-// through the piece's triangles (piece/sight_mesh.hpp; path_radiance below), corrects it by what it
-// meets less what the environment would have shown there: a control variate, so a ray that
-// escapes adds nothing and no noise, and the mean over the still frames is the metal seeing
-// its piece as the reference's does (render/piece_tracer.cpp).
-// One ray a pixel and frame (METAL_SEES_PIECE): traced at a quarter of the pixels (one a 4×4
-// block, its correction spread by depth over the block's surface), the still pictures were
-// further from the reference (the halo 4.41 against 3.32 ΔE00 after 16 frames) and a polished
-// metal's sharp reflections of its stones blurred, for a third of the time on llvmpipe, not a
-// sixteenth: the cost follows the slowest ray of a block of lanes, not the pixel count.
+// through the piece's triangles (piece/sight_mesh.hpp; path_radiance below), corrects it by
+// what it meets less what the environment would have shown there: a control variate, so a ray
+// that escapes adds nothing and no noise, and the mean over the still frames is the metal
+// seeing its piece as the reference's does (render/piece_tracer.cpp). Compiled in with
+// METAL_SEES_PIECE.
+// Each pixel traces its own ray, in its tile's turn (sight_traced()). One ray a 4×4 block, its
+// correction spread over the block's surface by depth, put the still pictures further from the
+// reference (the halo 4.41 against 3.32 ΔE00 after 16 frames) and blurred a polished metal's
+// reflections of its stones, for a third of the time on llvmpipe, not a sixteenth: the cost
+// follows the slowest ray of a block of lanes, not the count of rays.
 
 #ifdef METAL_SEES_PIECE
 uniform highp sampler2D u_bvh_nodes;      // piece/sight_mesh.hpp's layout
 uniform highp sampler2D u_bvh_triangles;
 uniform samplerCube u_environment_sharp;  // the environment itself, unfiltered
 uniform float u_h;                        // the lights' lobe exponent
-uniform int u_sample;                     // the still frame's number: its GGX sample
+uniform int u_sample;                     // the still frame's number less one (0, 1, ...)
 uniform float u_ray_offset_mm;            // a reflected ray starts this far off the surface
 uniform float u_k_s;                      // the lights' share in a stone's reflection
 uniform float u_k_st;                     // ... and in what leaves a stone
@@ -25,6 +26,13 @@ const int kTexWidth = 1024;       // texel_array.hpp's kTextureWidth (i >> 10 be
 const int kBvhStack = 32;         // two nodes a level of sight_mesh.hpp's kSightMeshDepth
 const int kPathSurfaces = 3;      // the surfaces a reflected ray's path meets outside stones
 const int kInsideSegments = 8;    // ... and its segments inside one, as the trace's depth 8
+// A tile of kSightTile² pixels traces one frame in kSightFrames, in turn with its neighbours
+// (sight_traced()), its correction weighed kSightFrames times: the mean of the frames is the
+// same, and a frame costs a quarter. One ray a pixel and frame made a halo's still frame at
+// 1920×1080 on llvmpipe 2.6 s; a tile, not a pixel, because a SIMD rasteriser shades blocks of
+// pixels together (llvmpipe 4×4) and a block with one ray costs as much as one with sixteen.
+const int kSightTile = 4;
+const int kSightFrames = 4;
 ivec2 texel_of(int i) { return ivec2(i & (kTexWidth - 1), i >> 10); }
 
 // Where the ray o + t d, 0 <= t <= t_max, enters node's box (its near side), or -1 where it
@@ -141,9 +149,11 @@ uint g_random;
 vec2 frame_random() {
     uvec2 pixel = uvec2(gl_FragCoord.xy);
     uint h = mix_bits(pixel.x * 0x9e3779b9u ^ mix_bits(pixel.y));
-    g_random = mix_bits(h ^ uint(u_sample) * 0x85ebca6bu);
+    int round_of_tiles = u_sample / kSightFrames;  // this pixel's how-manieth ray
+    g_random = mix_bits(h ^ uint(round_of_tiles) * 0x85ebca6bu);
     vec2 offset = vec2(float(h & 0xffffu), float(h >> 16)) / 65536.0;
-    return fract(offset + float(u_sample) * vec2(0.7548776662466927, 0.5698402909980532));
+    return fract(offset +
+                 float(round_of_tiles) * vec2(0.7548776662466927, 0.5698402909980532));
 }
 float next_random() {
     g_random = mix_bits(g_random + 0x9e3779b9u);
@@ -279,15 +289,25 @@ vec3 path_radiance(vec3 o, vec3 d, out bool met) {
     return throughput * escaped(o, d, k, from_normal);
 }
 
-// The correction of the split sum by what one reflected ray meets of the piece (see above).
+// Whether this pixel's tile traces in this frame: the four tiles of each 2×2 group of tiles
+// take the frames in turn.
+bool sight_traced() {
+    ivec2 tile = ivec2(gl_FragCoord.xy) / kSightTile;
+    return (tile.x + 2 * tile.y + u_sample) % kSightFrames == 0;
+}
+
+// The correction of the split sum by what one reflected ray meets of the piece (see above),
+// weighed for the frames its tile does not trace.
 vec3 piece_correction(vec3 p, vec3 n, vec3 face, vec3 v) {
+    if (!sight_traced()) return vec3(0.0);
     vec3 l, weight;
     if (!sample_reflection(n, v, frame_random(), l, weight)) return vec3(0.0);
     vec3 o = p + face * u_ray_offset_mm;
     bool met;
     vec3 seen = path_radiance(o, l, met);
     // A ray that leaves the piece at once sees what the split sum counted: nothing to add.
-    return met ? weight * (seen - escaped(o, l, 1.0, vec3(0.0))) : vec3(0.0);
+    return met ? float(kSightFrames) * weight * (seen - escaped(o, l, 1.0, vec3(0.0)))
+               : vec3(0.0);
 }
 #endif
 
