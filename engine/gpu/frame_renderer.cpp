@@ -134,10 +134,15 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         for (std::size_t i = 0; i < r.frames_.size(); ++i) {
             placed.push_back({kinds[r.kinds_[i]], r.frames_[i].placement, &r.frames_[i].material});
         }
+        // Where the GPU cannot hold it, the metal sees the environment alone, as a moving
+        // frame's does, and says why: the piece is still shown.
         auto sight = PieceSight::make(sight_mesh(*metal, placed));
-        if (!sight) return Error{"frame renderer: " + sight.error()};
-        auto sees = r.ring_->see_piece(std::move(sight).value());
-        if (!sees) return Error{sees.error()};
+        auto sees = sight ? r.ring_->see_piece(std::move(sight).value())
+                          : Result<bool>(Error{sight.error()});
+        if (!sees) {
+            r.metal_sight_note_ =
+                "the metal sees the environment alone, not its piece: " + sees.error();
+        }
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         r.ring_radius_mm_ = metal->radius_mm();
         for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));

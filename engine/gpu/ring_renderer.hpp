@@ -1,7 +1,8 @@
 #pragma once
 // Draws the ring with physically based metal shading, the CPU reference's model (GGX
 // distribution, separable Smith masking, Schlick Fresnel from the metal's F0), lit by up to
-// kMaxLights lights and by the environment filtered for its roughness (metal_environment.hpp);
+// kMaxLights lights and by the environment filtered for its roughness (metal_environment.hpp),
+// and in a still view's frames seeing its own piece (piece_sight.hpp, metal_sight.glsl);
 // and renders the scene around the stone
 // (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
 // from the stone's centre (docs/design.md, "Jewellery").
@@ -61,9 +62,8 @@ class RingRenderer {
     // The uniforms and textures of a metal that sees its piece (metal_sight.glsl).
     void set_sight(const Program& ring, const ShadingSettings& lights, int still_sample) const;
 
-    ProgramVariants ring_;  // one per light count, all built by make()
-    ProgramVariants
-        ring_sees_piece_;  // ... and seeing its piece (METAL_SEES_PIECE), by see_piece()
+    ProgramVariants ring_;             // one per light count, all built by make()
+    ProgramVariants ring_sees_piece_;  // ... seeing its piece (METAL_SEES_PIECE): see_piece()
     std::optional<PieceSight> sight_;
     const EnvironmentCube* sharp_ = nullptr;  // the environment unfiltered
     Program background_;

@@ -1,5 +1,6 @@
 #include "piece/sight_mesh.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -39,13 +40,20 @@ void push(std::vector<float>& out, const glm::dvec3& v, float w) {
 
 SightMesh sight_mesh(const MetalMesh& metal, const std::vector<PlacedStone>& stones) {
     std::vector<SightTriangle> triangles;
+    const std::size_t vertices = std::min(metal.positions.size(), metal.normals.size());
     for (std::size_t i = 0; i + 2 < metal.indices.size(); i += 3) {
         SightTriangle t;
+        bool placed = true;
         for (int k = 0; k < 3; ++k) {
             const std::uint32_t v = metal.indices[i + static_cast<std::size_t>(k)];
+            if (v >= vertices) {  // a corner past the mesh's vertices: no triangle
+                placed = false;
+                break;
+            }
             t.corners[k] = glm::dvec3(metal.positions[v]);
             t.normals[k] = glm::dvec3(metal.normals[v]);
         }
+        if (!placed) continue;
         // Outward as its vertex normals say (render/piece_tracer.cpp's metal_as_solid).
         if (wound(t, t.normals[0] + t.normals[1] + t.normals[2])) triangles.push_back(t);
     }

@@ -38,7 +38,8 @@ struct SightMesh {
     std::size_t triangle_count = 0;
 };
 
-// Triangles without area are left out (a ray cannot meet them).
+// Triangles without area, or with a corner not finite or past the mesh's vertices, are left
+// out (a ray cannot meet them). Every stone's material must be given.
 SightMesh sight_mesh(const MetalMesh& metal, const std::vector<PlacedStone>& stones);
 
 }  // namespace gem
