@@ -30,16 +30,16 @@ $diamond_fast << EOD
 20.0 1.43
 EOD
 $halo_here << EOD
-2.0 6.47
-5.5 5.22
-10.7 4.60
-20.6 3.98
+2.0 6.50
+5.5 5.35
+10.7 4.55
+20.6 3.97
 EOD
 $halo_fast << EOD
-1.6 4.14
-4.7 3.45
-9.5 3.20
-19.2 3.12
+1.6 4.10
+4.7 3.53
+9.5 3.27
+19.2 3.18
 EOD
 set terminal pngcairo size 900,460 font 'DejaVu Sans,11' linewidth 1.5
 set output out.'/still-view-by-time.png'
