@@ -67,7 +67,6 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
     if (!metal_environment) return Error{"ring renderer: " + metal_environment.error()};
     RingRenderer r(std::move(ring), std::move(background).value(),
                    std::move(metal_environment).value());
-    r.sharp_ = &environment;
     r.f0_ = mesh.f0;
     r.roughness_ = std::clamp(mesh.roughness, 0.0f, 1.0f);
     r.radius_mm_ = mesh.radius_mm();
@@ -152,7 +151,7 @@ void RingRenderer::set_sight(const Program& ring, const ShadingSettings& lights,
     glBindTexture(GL_TEXTURE_2D, sight_->triangles());
     ring.set("u_bvh_triangles", 3);
     glActiveTexture(GL_TEXTURE4);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, sharp_->texture());
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.source().texture());
     ring.set("u_environment_sharp", 4);
     glActiveTexture(GL_TEXTURE0);
     ring.set("u_h", static_cast<float>(lights.h));

@@ -65,7 +65,6 @@ class RingRenderer {
     ProgramVariants ring_;             // one per light count, all built by make()
     ProgramVariants ring_sees_piece_;  // ... seeing its piece (METAL_SEES_PIECE): see_piece()
     std::optional<PieceSight> sight_;
-    const EnvironmentCube* sharp_ = nullptr;  // the environment unfiltered
     Program background_;
     MetalEnvironment environment_;
     VertexArray vertex_array_;
