@@ -14,24 +14,24 @@ std::vector<ProgramSpec> all_program_specs() {
         // the facets from stone.glsl; each differs in its fragment shader's last file.
         {"table",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
+         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
          {},
          kTableFeatures},
         {"table_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
+         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
          {"NON_CONVEX"},
          kTableFeatures},
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
         {"trace",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
+         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {},
          kTraceFeatures},
         // A non-convex stone's fire is traced per channel in a still view only.
         {"trace_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
+         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
          {"NON_CONVEX"},
          kShadingFeatures | kFireExact},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
@@ -45,7 +45,7 @@ std::vector<ProgramSpec> all_program_specs() {
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring",
          {"ring.vert"},
-         {"metal.glsl", "metal_sight.glsl", "ring.frag"},
+         {"texel.glsl", "metal.glsl", "metal_sight.glsl", "ring.frag"},
          {},
          kLightCountBits},
         // The environment filtered by the metal's lobe (metal_environment.hpp).

@@ -25,7 +25,6 @@ uniform float u_ray_offset_mm;            // a reflected ray starts this far off
 uniform float u_k_s;                      // the lights' share in a stone's reflection
 uniform float u_k_st;                     // ... and in what leaves a stone
 
-const int kTexWidth = 1024;       // texel_array.hpp's kTextureWidth (i >> 10 below)
 const int kBvhStack = 32;         // two nodes a level of sight_mesh.hpp's kSightMeshDepth
 const int kPathSurfaces = 3;      // the surfaces a reflected ray's path meets outside stones
 const int kInsideSegments = 8;    // ... and its segments inside one, as the trace's depth 8
@@ -36,7 +35,6 @@ const int kInsideSegments = 8;    // ... and its segments inside one, as the tra
 // pixels together (llvmpipe 4×4) and a block with one ray costs as much as one with sixteen.
 const int kSightTile = 4;
 const int kSightFrames = 4;
-ivec2 texel_of(int i) { return ivec2(i & (kTexWidth - 1), i >> 10); }
 
 // Where the ray o + t d, 0 <= t <= t_max, enters node's box (its near side), or -1 where it
 // misses it; its first and count in first_count.
@@ -62,37 +60,40 @@ int nearest_triangle(vec3 o, vec3 d, bool inside, float t_max, out vec3 tuv) {
     float facing = inside ? -1.0 : 1.0;
     tuv = vec3(t_max, 0.0, 0.0);
     int best = -1;
+    // Each node on the stack with its first and count, read when its box was tested, and
+    // where the ray enters that box.
     int stack[kBvhStack];
+    ivec2 stack_first_count[kBvhStack];
     float stack_enter[kBvhStack];
-    int top = 0;
     ivec2 root;
     float root_enter = enter_box(0, o, inv, t_max, root);
     if (root_enter < 0.0) return -1;
     stack[0] = 0;
+    stack_first_count[0] = root;
     stack_enter[0] = root_enter;
-    top = 1;
+    int top = 1;
     while (top > 0) {
         --top;
         if (stack_enter[top] > tuv.x) continue;  // a nearer hit was found since it was pushed
         int node = stack[top];
-        ivec2 own = ivec2(texelFetch(u_bvh_nodes, texel_of(2 * node), 0).w,
-                          texelFetch(u_bvh_nodes, texel_of(2 * node + 1), 0).w);
+        ivec2 own = stack_first_count[top];
         if (own.y == 0) {
-            ivec2 unused;
-            float left = enter_box(node + 1, o, inv, tuv.x, unused);
-            float right = enter_box(own.x, o, inv, tuv.x, unused);
+            ivec2 left_fc;
+            ivec2 right_fc;
+            float left = enter_box(node + 1, o, inv, tuv.x, left_fc);
+            float right = enter_box(own.x, o, inv, tuv.x, right_fc);
             if (top + 2 > kBvhStack) continue;
             bool left_first = right < 0.0 || (left >= 0.0 && left <= right);
-            int near_node = left_first ? node + 1 : own.x;
-            float near_enter = left_first ? left : right;
-            int far_node = left_first ? own.x : node + 1;
             float far_enter = left_first ? right : left;
             if (far_enter >= 0.0) {
-                stack[top] = far_node;
+                stack[top] = left_first ? own.x : node + 1;
+                stack_first_count[top] = left_first ? right_fc : left_fc;
                 stack_enter[top++] = far_enter;
             }
+            float near_enter = left_first ? left : right;
             if (near_enter >= 0.0) {
-                stack[top] = near_node;
+                stack[top] = left_first ? node + 1 : own.x;
+                stack_first_count[top] = left_first ? left_fc : right_fc;
                 stack_enter[top++] = near_enter;
             }
             continue;

@@ -34,10 +34,6 @@ uniform highp sampler2D u_triangles;
 uniform int u_triangle_count;
 #endif
 
-const int kTexWidth = 1024;  // texel_array.hpp: kTextureWidth
-
-ivec2 texel_of(int i) { return ivec2(i % kTexWidth, i / kTexWidth); }
-
 // Where the ray from p along d (stone frame) meets the virtual cube, as a cube-map lookup
 // direction: a loose stone's six images were taken from its centre, so the exit point matters,
 // not only d (a piece's cubes are looked up by direction: CUBE_AT_INFINITY). The sharp level
