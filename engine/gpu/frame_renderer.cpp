@@ -44,6 +44,7 @@ Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
     frame.placement = {};
     frame.stone = &kind(k);
     frame.camera = camera;
+    frame.piece_sight = nullptr;
     set_sight(frame, first);
     frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
     glDepthMask(GL_TRUE);
@@ -272,6 +273,9 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         set_sight(frame, i);
         frame.scene_radius_mm = scene_radius_mm_;
         frame.still = still;
+        // As the metal's rays (RingRenderer::draw), from the still view's second frame.
+        frame.piece_sight =
+            ring_ && ring_->sees_piece() && still.index >= 1 ? ring_.get() : nullptr;
     }
     // The stones' depth first (where the method has that pass), then the metal, then the
     // stones: each is shaded only where it is seen. Stones shaded before the metal cost every

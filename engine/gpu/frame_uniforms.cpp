@@ -95,8 +95,10 @@ std::uint32_t shading_features(const StoneFrame& frame) {
            specular_power_feature(frame.shading.h);
 }
 
-void set_light_uniforms(const Program& program, const std::vector<Light>& lights,
-                        const Placement& placement) {
+namespace {
+
+void set_lights(const Program& program, const std::vector<Light>& lights,
+                const Placement& placement, const char* position_name, const char* colour_name) {
     glm::vec4 position[kMaxLights] = {};
     glm::vec3 colour[kMaxLights] = {};
     const int count = light_count_of(light_count_feature(lights));
@@ -107,8 +109,19 @@ void set_light_uniforms(const Program& program, const std::vector<Light>& lights
                           : glm::vec4(glm::vec3(placement.to_stone(l.position)), 1.0f);
         colour[i] = glm::vec3(l.colour);
     }
-    glUniform4fv(program.uniform("u_light_position"), kMaxLights, &position[0].x);
-    glUniform3fv(program.uniform("u_light_colour"), kMaxLights, &colour[0].x);
+    glUniform4fv(program.uniform(position_name), kMaxLights, &position[0].x);
+    glUniform3fv(program.uniform(colour_name), kMaxLights, &colour[0].x);
+}
+
+}  // namespace
+
+void set_light_uniforms(const Program& program, const std::vector<Light>& lights,
+                        const Placement& placement) {
+    set_lights(program, lights, placement, "u_light_position", "u_light_colour");
+}
+
+void set_piece_light_uniforms(const Program& program, const std::vector<Light>& lights) {
+    set_lights(program, lights, {}, "u_piece_light_position", "u_piece_light_colour");
 }
 
 SamplerBinding::SamplerBinding(GLuint unit, GLuint sampler) : unit_(unit) {

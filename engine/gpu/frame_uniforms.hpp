@@ -15,6 +15,8 @@
 
 namespace gem::gpu {
 
+class RingRenderer;
+
 // What a frame of a still view traces differently from a moving one (HdrPicture::still_frame());
 // the default is a moving frame.
 struct StillFrame {
@@ -42,6 +44,9 @@ struct StoneFrame {
     Placement placement{};
     // What this frame of a still view traces differently (HdrPicture::still_frame()).
     StillFrame still{};
+    // In a piece's still view after its first frame: the piece its exits follow
+    // (stone_sight.glsl); null: the cube alone.
+    const RingRenderer* piece_sight = nullptr;
 };
 
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).
@@ -73,6 +78,9 @@ std::uint32_t shading_features(const StoneFrame& frame);
 // program (light_count_feature).
 void set_light_uniforms(const Program& program, const std::vector<Light>& lights,
                         const Placement& placement = {});
+// u_piece_light_position and u_piece_light_colour (metal.glsl): the lights in the piece's frame,
+// for the metal's shading and for rays that follow the piece.
+void set_piece_light_uniforms(const Program& program, const std::vector<Light>& lights);
 
 // A sampler bound to a texture unit for as long as this lives (it overrides the filter of
 // whatever texture a later pass binds to the unit).

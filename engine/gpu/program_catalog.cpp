@@ -3,10 +3,19 @@
 #include "gpu/program_variants.hpp"
 
 namespace gem::gpu {
+namespace {
+
+std::vector<std::string> trace_sources() {
+    return {"camera.glsl", "texel.glsl",      "stone.glsl",       "specular.glsl", "shading.glsl",
+            "metal.glsl",  "piece_path.glsl", "stone_sight.glsl", "trace.frag"};
+}
+
+}  // namespace
 
 std::vector<ProgramSpec> all_program_specs() {
     constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
-    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
+    constexpr std::uint32_t kTraceFeatures =
+        kShadingFeatures | kFireFirstOrder | kFireExact | kSeesPiece;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -23,17 +32,14 @@ std::vector<ProgramSpec> all_program_specs() {
          {"NON_CONVEX"},
          kTableFeatures},
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
-        {"trace",
-         {"stone.vert"},
-         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
-         {},
-         kTraceFeatures},
+        // In a piece's still frames its exits follow the piece (stone_sight.glsl).
+        {"trace", {"stone.vert"}, trace_sources(), {}, kTraceFeatures},
         // A non-convex stone's fire is traced per channel in a still view only.
         {"trace_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "trace.frag"},
+         trace_sources(),
          {"NON_CONVEX"},
-         kShadingFeatures | kFireExact},
+         kShadingFeatures | kFireExact | kSeesPiece},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
@@ -45,9 +51,10 @@ std::vector<ProgramSpec> all_program_specs() {
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring",
          {"ring.vert"},
-         {"texel.glsl", "metal.glsl", "metal_sight.glsl", "ring.frag"},
+         {"texel.glsl", "specular.glsl", "metal.glsl", "piece_path.glsl", "metal_sight.glsl",
+          "ring.frag"},
          {},
-         kLightCountBits},
+         kLightCountBits | kSeesPiece},
         // The environment filtered by the metal's lobe (metal_environment.hpp).
         {"metal_filter", {"fullscreen.vert"}, {"metal_filter.frag"}, {}},
         // The picture from HDR radiance to the display: glare pyramid, tone curve

@@ -20,6 +20,7 @@ std::vector<std::string> feature_defines(std::uint32_t features) {
     if (const int power = specular_power_of(features); power > 0) {
         defines.push_back("SPECULAR_POWER " + std::to_string(power));
     }
+    if ((features & kSeesPiece) != 0) defines.emplace_back("SEES_PIECE");
     return defines;
 }
 

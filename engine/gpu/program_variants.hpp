@@ -28,6 +28,9 @@ enum ShaderFeature : std::uint32_t {
     kFireExact = 1u << 3,       // FIRE_EXACT: each channel traced at its own index (trace)
     kTwoViews = 1u << 4,        // TWO_VIEWS: a blend of two stored views (table)
     kAbsorbing = 1u << 5,       // ABSORBING: the body absorbs (Beer-Lambert, shading.glsl)
+    // SEES_PIECE: a still frame's rays follow the whole piece (piece_path.glsl): the metal's
+    // reflections, the stones' exits. Above the light count and the specular power (bit 19).
+    kSeesPiece = 1u << 19,
 };
 // Bits 6-8 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
 inline constexpr std::uint32_t kLightCountShift = 6;
@@ -52,11 +55,12 @@ std::uint32_t specular_power_feature(double h);
 constexpr int specular_power_of(std::uint32_t features) {
     return static_cast<int>((features & kSpecularPowerBits) >> kSpecularPowerShift);
 }
+static_assert((kSeesPiece & kSpecularPowerBits) == 0 && kSeesPiece > kSpecularPowerBits);
 inline constexpr std::uint32_t kShadingFeatures =
     kThesisShading | kCubeAtInfinity | kAbsorbing | kLightCountBits | kSpecularPowerBits;
 
-// The #defines of `features`, in bit order, then the light count (none for no lights) and the
-// specular power (none for pow at run time).
+// The #defines of `features`, in bit order, then the light count (none for no lights), the
+// specular power (none for pow at run time) and SEES_PIECE.
 std::vector<std::string> feature_defines(std::uint32_t features);
 
 class ProgramVariants {

@@ -94,12 +94,32 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
 }
 
 Result<bool> RingRenderer::see_piece(PieceSight sight) {
-    ProgramVariants ring("ring", {"METAL_SEES_PIECE"});
-    auto built = ring.build_every_light_count(0, [](const Program&) {});
+    ProgramVariants ring("ring", {});
+    auto built = ring.build_every_light_count(kSeesPiece, [](const Program&) {});
     if (!built) return Error{built.error()};
     ring_sees_piece_ = std::move(ring);
     sight_ = std::move(sight);
     return true;
+}
+
+void RingRenderer::set_metal_uniforms(const Program& program, const ShadingSettings& lights,
+                                      int first_unit) const {
+    program.set("u_metal_f0", f0_);
+    // Constant over the mesh: the alphas of metal.glsl's lobes and a light lobe's solid angle.
+    const double alpha = ggx_alpha(roughness_);
+    program.set("u_metal_roughness", roughness_);
+    program.set("u_metal_alpha", static_cast<float>(alpha));
+    program.set("u_metal_alpha_lit", static_cast<float>(std::sqrt(alpha * alpha + 1.0 / lights.h)));
+    program.set("u_lobe_solid_angle",
+                static_cast<float>(2.0 * 3.14159265358979323846 / (lights.h + 1.0)));
+    glActiveTexture(GL_TEXTURE0 + first_unit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.filtered().texture());
+    program.set("u_metal_environment", first_unit);
+    glActiveTexture(GL_TEXTURE0 + first_unit + 1);
+    glBindTexture(GL_TEXTURE_2D, environment_.brdf_table());
+    program.set("u_environment_brdf", first_unit + 1);
+    glActiveTexture(GL_TEXTURE0);
+    set_piece_light_uniforms(program, lights.lights);
 }
 
 void RingRenderer::draw_mesh(const Program& ring, const glm::mat4& view_projection,
@@ -109,22 +129,7 @@ void RingRenderer::draw_mesh(const Program& ring, const glm::mat4& view_projecti
     ring.set("u_view_projection", view_projection);
     ring.set("u_eye", eye);
     ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
-    ring.set("u_f0", f0_);
-    // Constant over the mesh: the alphas of metal.glsl's lobes and a light lobe's solid angle.
-    const double alpha = ggx_alpha(roughness_);
-    ring.set("u_roughness", roughness_);
-    ring.set("u_alpha", static_cast<float>(alpha));
-    ring.set("u_alpha_lit", static_cast<float>(std::sqrt(alpha * alpha + 1.0 / lights.h)));
-    ring.set("u_lobe_solid_angle",
-             static_cast<float>(2.0 * 3.14159265358979323846 / (lights.h + 1.0)));
-    glActiveTexture(GL_TEXTURE0);
-    glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.filtered().texture());
-    ring.set("u_environment", 0);
-    glActiveTexture(GL_TEXTURE1);
-    glBindTexture(GL_TEXTURE_2D, environment_.brdf_table());
-    ring.set("u_environment_brdf", 1);
-    glActiveTexture(GL_TEXTURE0);
-    set_light_uniforms(ring, lights.lights);
+    set_metal_uniforms(ring, lights, 0);
     glDisable(GL_BLEND);
     if (cull_back) {
         glEnable(GL_CULL_FACE);
@@ -141,25 +146,30 @@ void RingRenderer::draw_mesh(const Program& ring, const glm::mat4& view_projecti
     glDisable(GL_CULL_FACE);
 }
 
-void RingRenderer::set_sight(const Program& ring, const ShadingSettings& lights,
-                             int still_sample) const {
-    ring.use();
-    glActiveTexture(GL_TEXTURE2);
+void RingRenderer::set_path_uniforms(const Program& program, const ShadingSettings& lights,
+                                     int still_sample, int first_unit) const {
+    glActiveTexture(GL_TEXTURE0 + first_unit);
     glBindTexture(GL_TEXTURE_2D, sight_->nodes());
-    ring.set("u_bvh_nodes", 2);
-    glActiveTexture(GL_TEXTURE3);
+    program.set("u_bvh_nodes", first_unit);
+    glActiveTexture(GL_TEXTURE0 + first_unit + 1);
     glBindTexture(GL_TEXTURE_2D, sight_->triangles());
-    ring.set("u_bvh_triangles", 3);
-    glActiveTexture(GL_TEXTURE4);
+    program.set("u_bvh_triangles", first_unit + 1);
+    glActiveTexture(GL_TEXTURE0 + first_unit + 2);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment_.source().texture());
-    ring.set("u_environment_sharp", 4);
+    program.set("u_environment_sharp", first_unit + 2);
     glActiveTexture(GL_TEXTURE0);
-    ring.set("u_h", static_cast<float>(lights.h));
-    ring.set("u_k_s", static_cast<float>(lights.k_s));
-    ring.set("u_k_st", static_cast<float>(lights.k_st));
-    ring.set("u_sample", still_sample - 1);
+    program.set("u_h", static_cast<float>(lights.h));
+    program.set("u_piece_k_s", static_cast<float>(lights.k_s));
+    program.set("u_piece_k_st", static_cast<float>(lights.k_st));
+    program.set("u_sample", still_sample - 1);
     // Far above a float's rounding of the metal's millimetres, far below a pixel.
-    ring.set("u_ray_offset_mm", static_cast<float>(2e-5 * std::max(radius_mm_, 1.0)));
+    program.set("u_ray_offset_mm", static_cast<float>(2e-5 * std::max(radius_mm_, 1.0)));
+}
+
+void RingRenderer::set_piece_sight_uniforms(const Program& program, const ShadingSettings& lights,
+                                            int still_sample, int first_unit) const {
+    set_metal_uniforms(program, lights, first_unit);
+    set_path_uniforms(program, lights, still_sample, first_unit + 2);
 }
 
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
@@ -180,8 +190,9 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
         draw_mesh(*ring_.find(lights), vp, eye, at_infinity, lights_from, closed_);
         return gl_check("ring pass");
     }
-    const Program& ring = *ring_sees_piece_.find(lights);
-    set_sight(ring, lights_from, still_sample);
+    const Program& ring = *ring_sees_piece_.find(kSeesPiece | lights);
+    ring.use();
+    set_path_uniforms(ring, lights_from, still_sample, 2);
     draw_mesh(ring, vp, eye, at_infinity, lights_from, closed_);
     return gl_check("ring pass (seeing its piece)");
 }

@@ -47,6 +47,15 @@ class RingRenderer {
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
                       const ShadingSettings& lights_from, int still_sample = -1) const;
 
+    // Whether a still view's rays may follow the piece (see_piece() succeeded).
+    bool sees_piece() const { return sight_ && sight_->triangle_count() > 0; }
+    // For a stone's program that follows its exits into the piece in the still frame
+    // `still_sample` (stone_sight.glsl): the metal's and the piece's uniforms, its textures on
+    // the kPieceSightUnits units from `first_unit`. Needs sees_piece().
+    static constexpr int kPieceSightUnits = 5;
+    void set_piece_sight_uniforms(const Program& program, const ShadingSettings& lights,
+                                  int still_sample, int first_unit) const;
+
     // Renders background (the environment) + ring into `target`'s six faces as seen from
     // `centre` (perspective 90° per face; the stone's centre, or a group of stones'). `target`
     // must be another cube than `background`. Restores the caller's framebuffer binding and
@@ -59,11 +68,15 @@ class RingRenderer {
     RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment);
     void draw_mesh(const Program& ring, const glm::mat4& view_projection, const glm::vec3& eye,
                    bool eye_at_infinity, const ShadingSettings& lights, bool cull_back) const;
-    // The uniforms and textures of a metal that sees its piece (metal_sight.glsl).
-    void set_sight(const Program& ring, const ShadingSettings& lights, int still_sample) const;
+    // metal.glsl's uniforms, its two textures on `first_unit` and the next.
+    void set_metal_uniforms(const Program& program, const ShadingSettings& lights,
+                            int first_unit) const;
+    // piece_path.glsl's uniforms, its three textures from `first_unit`.
+    void set_path_uniforms(const Program& program, const ShadingSettings& lights, int still_sample,
+                           int first_unit) const;
 
     ProgramVariants ring_;             // one per light count, all built by make()
-    ProgramVariants ring_sees_piece_;  // ... seeing its piece (METAL_SEES_PIECE): see_piece()
+    ProgramVariants ring_sees_piece_;  // ... seeing its piece (SEES_PIECE): see_piece()
     std::optional<PieceSight> sight_;
     Program background_;
     MetalEnvironment environment_;

@@ -14,6 +14,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
 #include "gpu/render_target.hpp"
+#include "gpu/ring_renderer.hpp"
 #include "gpu/stone_method.hpp"
 #include "render/camera.hpp"
 #include "trace/convex_pieces.hpp"
@@ -26,6 +27,7 @@ namespace {
 // Texture units: the environment cube, then the stone's guess map or triangles.
 constexpr int kEnvironmentUnit = 0;
 constexpr int kStoneUnit = 1;
+constexpr int kPieceSightUnit = 2;  // and the next RingRenderer::kPieceSightUnits - 1
 
 // A GLSL float literal with nine significant digits (a float's round trip) and always a point
 // or an exponent: "1" would be an int, and GLSL ES does not mix ints into float arithmetic.
@@ -314,9 +316,14 @@ std::string TraceMethod::measurement() const {
 Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& trace,
                                TraceDispersion dispersion) {
     assert(frame.environment != nullptr);
+    // The piece's exits are followed under the physical shading only: the thesis' is no
+    // light transport to correct.
+    const bool sees_piece =
+        frame.piece_sight != nullptr && frame.shading.model == ShadingModel::physical;
     const std::uint32_t features =
         shading_features(frame) |
-        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr);
+        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr) |
+        (sees_piece ? kSeesPiece : 0u);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -324,6 +331,10 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, kEnvironmentUnit);
     geometry_.bind(p, kStoneUnit);
+    if (sees_piece) {
+        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index,
+                                                    kPieceSightUnit);
+    }
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));
     // A still frame may trace deeper than a moving one, never shallower.

@@ -11,8 +11,8 @@
 // piece with a kind of stone whose tables are given (--tables, as the kiosk builds them for a
 // non-convex stone: gpu/piece_tables.hpp) is drawn a third time, that kind from its tables.
 // Last, per piece, the time to make again what its stones see, as a change of look does, and the
-// metal pass of a still view's frame, whose metal follows its reflections through the piece
-// (metal_sight.glsl).
+// metal pass and stone passes of a still view's frame, whose metal follows its reflections and
+// whose stones their exits through the piece (metal_sight.glsl, stone_sight.glsl).
 //
 //   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--tables FILE.gemdb ...]
 //                [piece.toml ...]
@@ -144,6 +144,7 @@ struct Subject {
     std::vector<double> submit_ms;
     std::vector<double> depth_ms;
     std::vector<double> still_metal_ms;  // a still view's frame's metal pass
+    std::vector<double> still_stone_ms;  // ... and its stone passes
     double sight_ms = 0.0;               // what the stones see made again, as a new look makes it
 };
 
@@ -248,9 +249,10 @@ int main(int argc, char** argv) {
             s.depth_ms.push_back(stats.stone_depth_ms);
             gem::gpu::StillFrame still;
             still.index = f + 1;
-            s.still_metal_ms.push_back(
-                must(s.scene->renderer().render(s.camera, gem::gpu::FrameWait::passes, still))
-                    .metal_ms);
+            const gem::gpu::FrameStats still_stats =
+                must(s.scene->renderer().render(s.camera, gem::gpu::FrameWait::passes, still));
+            s.still_metal_ms.push_back(still_stats.metal_ms);
+            s.still_stone_ms.push_back(still_stats.stone_ms);
         }
     }
     // What the stones see (each group's cube of the metal, gpu/frame_renderer.cpp) is made when
@@ -271,16 +273,16 @@ int main(int argc, char** argv) {
     }
     std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
                 width, height, exact_fire ? "exact" : "first-order", frames);
-    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s\n", "piece",
-                "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms", "metal ms",
-                "x first", "centre px", "others px", "shaded px", "kept px", "metal tri",
-                "sight ms", "still metal");
+    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s %12s\n",
+                "piece", "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms",
+                "metal ms", "x first", "centre px", "others px", "shaded px", "kept px",
+                "metal tri", "sight ms", "still metal", "still stones");
     const double first = median(subjects.front().frame_ms);
     for (const Subject& s : subjects) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
         std::printf(
             "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu "
-            "%9.1f %11.1f\n",
+            "%9.1f %11.1f %12.1f\n",
             s.file.c_str(),
             s.tabled   ? "tables"
             : s.chosen ? "chosen"
@@ -288,7 +290,7 @@ int main(int argc, char** argv) {
             s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms), median(s.depth_ms),
             median(s.submit_ms), median(s.metal_ms), median(s.frame_ms) / first, px.centre,
             px.others, px.shaded, px.kept, s.piece->metal.indices.size() / 3, s.sight_ms,
-            median(s.still_metal_ms));
+            median(s.still_metal_ms), median(s.still_stone_ms));
     }
     return 0;
 }

@@ -22,14 +22,17 @@ TEST(GpuPrograms, ContextIsOpenGlEs3) {
 
 // Every combination of the features a spec's sources test (program_variants.hpp), as
 // ProgramVariants would build it; of the specular powers, pow at run time and one whole
-// exponent, with lights only (without, no lobe is computed).
+// exponent, with lights only (without, no lobe is computed). A piece is followed under the
+// physical shading only (trace_method.cpp), so SEES_PIECE never meets SHADING_THESIS.
 std::vector<gpu::ProgramSpec> every_variant(const gpu::ProgramSpec& spec) {
     constexpr std::uint32_t kWholePower = 60u << gpu::kSpecularPowerShift;
     const std::uint32_t switches = spec.features & ~gpu::kSpecularPowerBits;
+    constexpr std::uint32_t kNever = gpu::kSeesPiece | gpu::kThesisShading;
     std::vector<gpu::ProgramSpec> variants;
     for (std::uint32_t base = 0; base <= switches; ++base) {
         if ((base & ~switches) != 0) continue;
         if (gpu::light_count_of(base) > kMaxLights) continue;
+        if ((base & kNever) == kNever) continue;
         const bool powers =
             (spec.features & gpu::kSpecularPowerBits) != 0 && gpu::light_count_of(base) > 0;
         for (std::uint32_t features : {base, base | kWholePower}) {
@@ -57,11 +60,13 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
             ++built;
         }
     }
-    // table, table_non_convex and trace test five switches (32 each), trace_non_convex four
-    // (16), each with 0 .. 4 lights; the ring and phong, the light count only. Every one of
-    // these but the ring's, with 1 .. 4 lights, once more with a whole specular power.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 32 + 16 + 1 + 1) +
-                         4 * (32 + 32 + 32 + 16 + 1));
+    // table and table_non_convex test five switches (32 each), trace six less the 16 with
+    // both SEES_PIECE and SHADING_THESIS (48), trace_non_convex five less 8 (24), each with
+    // 0 .. 4 lights; the ring SEES_PIECE or not (2) and phong none, besides the light count.
+    // Every one of these but the ring's, with 1 .. 4 lights, once more with a whole specular
+    // power.
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 48 + 24 + 2 + 1) +
+                         4 * (32 + 32 + 48 + 24 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }
@@ -77,6 +82,8 @@ TEST(GpuPrograms, FeatureDefinesFollowTheBits) {
     EXPECT_EQ(gpu::light_count_of(gpu::kThesisShading | gpu::light_count_feature(4)), 4);
     EXPECT_EQ(gpu::feature_defines(gpu::light_count_feature(2) | gpu::specular_power_feature(60)),
               (std::vector<std::string>{"LIGHT_COUNT 2", "SPECULAR_POWER 60"}));
+    EXPECT_EQ(gpu::feature_defines(gpu::kAbsorbing | gpu::kSeesPiece | gpu::light_count_feature(1)),
+              (std::vector<std::string>{"ABSORBING", "LIGHT_COUNT 1", "SEES_PIECE"}));
 }
 
 TEST(GpuPrograms, OnlyAWholeSpecularExponentIsCompiledIn) {

@@ -121,6 +121,11 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, int facet, float k) {
     return k * sum;
 }
 
+#ifdef SEES_PIECE
+// stone_sight.glsl: an exit (or the first reflection) that may be followed into the piece.
+void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k);
+#endif
+
 // The first reflected ray's share of the pixel.
 vec3 shade_reflected(vec3 p, vec3 d, vec3 n, int facet, float weight) {
     vec3 env = environment(p, d);
@@ -128,6 +133,9 @@ vec3 shade_reflected(vec3 p, vec3 d, vec3 n, int facet, float weight) {
     return weight * (light_specular(p, d, n, facet, u_k_s) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
 #else
+#ifdef SEES_PIECE
+    sight_candidate(p, d, n, facet, vec3(weight), u_k_s);
+#endif
     return weight * (env + light_specular(p, d, n, facet, u_k_s));
 #endif
 }
@@ -139,9 +147,13 @@ vec3 shade_exit(vec3 p, vec3 d, vec3 n, int facet, float weight, float path_mm, 
                      u_stone_colour * (1.0 - u_alpha));
 #else
 #ifdef ABSORBING
-    return weight * exp(-u_absorption * path_mm) * (env + light_specular(p, d, n, facet, u_k_st));
+    vec3 w = weight * exp(-u_absorption * path_mm);
 #else
-    return weight * (env + light_specular(p, d, n, facet, u_k_st));  // exp(0) per exit skipped
+    vec3 w = vec3(weight);  // exp(0) per exit skipped
 #endif
+#ifdef SEES_PIECE
+    sight_candidate(p, d, n, facet, w, u_k_st);
+#endif
+    return w * (env + light_specular(p, d, n, facet, u_k_st));
 #endif
 }

@@ -638,6 +638,9 @@ void main() {
     float facing = dot(n, direction);
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
+#ifdef SEES_PIECE
+    start_sight();
+#endif
 #ifdef FIRE_EXACT
     // Each channel's trace reflected and refracted at its own index, its colour mixed into the
     // channels; the reflection shaded once.
@@ -648,6 +651,9 @@ void main() {
         vec2 s = split_weight(-dot(direction, n), kAir, ior);
         reflected[k] = s.x;
         vec3 d;
+#ifdef SEES_PIECE
+        g_channel_mix = u_channel_mix[k];
+#endif
         if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
 #ifdef NON_CONVEX
             colour += u_channel_mix[k] * follow_branches(entry, d, s.y, facet, ior);
@@ -656,6 +662,9 @@ void main() {
 #endif
         }
     }
+#ifdef SEES_PIECE
+    g_channel_mix = u_channel_mix * reflected;
+#endif
     colour +=
         (u_channel_mix * reflected) * shade_reflected(entry, reflect(direction, n), n, facet, 1.0);
 #else
@@ -676,6 +685,9 @@ void main() {
         colour += follow_inside(entry, inward, dd, facet, split.y, u_ior);
     }
 #endif
+#endif
+#ifdef SEES_PIECE
+    colour += stone_correction();
 #endif
 
     o_colour = vec4(colour, 1.0);

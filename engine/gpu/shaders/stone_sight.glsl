@@ -1,0 +1,61 @@
+// What a stone in a piece sees of its setting, in a still view's frames (trace_method.hpp):
+// the stone's exits read a virtual cube of its group (piece/sight_groups.hpp), which holds the
+// environment and the metal as the split sum shades it, seen by direction from one point, and
+// no stones. The exact reference follows each exit into the piece (render/piece_tracer.cpp):
+// the claw beside the exit point, the neighbouring stones, the metal's own reflections. So one
+// of the pixel's exits (its first reflection among them) is chosen, each with a chance in
+// proportion to its weight (a weighted reservoir of one, Chao 1982: the exits come one at a
+// time, and none is kept), followed through the piece (piece_path.glsl), and what it meets less
+// what the cube and the lights gave it is added, weighed by the sum of the weights over the
+// chosen one's: a control variate, whose mean over the still frames is every exit seeing the
+// piece. An exit the cube showed right adds nothing and no noise. The chosen exit is seen
+// along its own direction; what fire moved the other channels' lookups by stays in the cube's
+// part. Each tile traces in its turn (sight_traced()), as the metal's do. Compiled in with
+// SEES_PIECE; follows shading.glsl and piece_path.glsl. The stone's own frame, but for the
+// path, in the piece's (u_frame_rotation, u_frame_origin).
+
+#ifdef SEES_PIECE
+bool g_sight_on = false;     // this pixel traces in this frame
+vec3 g_channel_mix = vec3(1.0);  // FIRE_EXACT: the weights of the channels a trace adds to
+float g_sight_total = 0.0;   // the candidates' weights so far
+float g_sight_chosen = 0.0;  // ... and the chosen one's
+vec3 g_sight_p;
+vec3 g_sight_d;
+vec3 g_sight_n;
+int g_sight_facet;
+vec3 g_sight_weight;
+float g_sight_k;
+
+void start_sight() {
+    g_sight_on = sight_traced();
+    if (g_sight_on) seed_random();
+}
+
+void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k) {
+    if (!g_sight_on) return;
+    vec3 w = g_channel_mix * weight;
+    float size = abs(w.r) + abs(w.g) + abs(w.b);
+    if (size <= 0.0) return;
+    g_sight_total += size;
+    if (next_random() * g_sight_total >= size) return;
+    g_sight_chosen = size;
+    g_sight_p = p;
+    g_sight_d = d;
+    g_sight_n = n;
+    g_sight_facet = facet;
+    g_sight_weight = w;
+    g_sight_k = k;
+}
+
+vec3 stone_correction() {
+    if (g_sight_chosen <= 0.0) return vec3(0.0);
+    vec3 counted = environment(g_sight_p, g_sight_d) +
+                   light_specular(g_sight_p, g_sight_d, g_sight_n, g_sight_facet, g_sight_k);
+    vec3 n = u_frame_rotation * g_sight_n;
+    vec3 o = u_frame_rotation * g_sight_p + u_frame_origin + n * u_ray_offset_mm;
+    bool met;
+    vec3 seen = path_radiance(o, u_frame_rotation * g_sight_d, g_sight_k, n, met);
+    return float(kSightFrames) * (g_sight_total / g_sight_chosen) * g_sight_weight *
+           (seen - counted);
+}
+#endif
