@@ -141,7 +141,7 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     auto renderer = gpu::FrameRenderer::make(std::move(setup));
     if (!renderer) return fail(renderer.error());
     gpu::FrameRenderer& r = renderer.value();
-    if (!r.metal_sight_note().empty()) std::printf("gemrender: %s\n", r.metal_sight_note().c_str());
+    if (!r.sight_note().empty()) std::printf("gemrender: %s\n", r.sight_note().c_str());
     if (const std::string settled = r.method().describe(); !settled.empty()) {
         std::printf("gemrender: %s %s\n", o.method.c_str(), settled.c_str());
     }

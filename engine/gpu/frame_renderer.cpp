@@ -129,20 +129,20 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         auto ring = RingRenderer::make(*metal, *r.environment_cube_);
         if (!ring) return Error{ring.error()};
         r.ring_ = std::make_unique<RingRenderer>(std::move(ring).value());
-        // In a still view the metal sees the piece, its own metal and stones, as the
-        // reference's does.
+        // In a still view the metal and the stones see the piece, its metal and stones, as the
+        // reference's do.
         std::vector<PlacedStone> placed;
         for (std::size_t i = 0; i < r.frames_.size(); ++i) {
             placed.push_back({kinds[r.kinds_[i]], r.frames_[i].placement, &r.frames_[i].material});
         }
-        // Where the GPU cannot hold it, the metal sees the environment alone, as a moving
-        // frame's does, and says why: the piece is still shown.
+        // Where the GPU cannot hold it, the metal sees the environment alone and the stones
+        // their cubes, as a moving frame's do, and it says why: the piece is still shown.
         auto sight = PieceSight::make(sight_mesh(*metal, placed));
         auto sees = sight ? r.ring_->see_piece(std::move(sight).value())
                           : Result<bool>(Error{sight.error()});
         if (!sees) {
-            r.metal_sight_note_ =
-                "the metal sees the environment alone, not its piece: " + sees.error();
+            r.sight_note_ =
+                "the metal and stones see the environment alone, not their piece: " + sees.error();
         }
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         r.ring_radius_mm_ = metal->radius_mm();

@@ -76,9 +76,9 @@ class FrameRenderer {
     // stones and metal) on the picture. Nullopt where the background shows the environment's
     // changing view.
     std::optional<SceneCover> cover(const Camera& camera) const;
-    // Why a still view's metal does not see its own piece (metal_sight.glsl), where it cannot;
-    // empty where it does, or there is no metal.
-    const std::string& metal_sight_note() const { return metal_sight_note_; }
+    // Why a still view's metal and stones do not see their own piece (piece_path.glsl), where
+    // they cannot; empty where they do, or there is no metal.
+    const std::string& sight_note() const { return sight_note_; }
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
@@ -110,7 +110,7 @@ class FrameRenderer {
     std::size_t kind_count_ = 0;
     const MethodEntry* method_entry_ = nullptr;
     std::string check_label_;  // "frame (trace)": made once, so a frame allocates nothing
-    std::string metal_sight_note_;
+    std::string sight_note_;
     std::unique_ptr<StoneMethod> method_;
     std::unique_ptr<RingRenderer> ring_;
     double scene_radius_mm_ = 0.0;

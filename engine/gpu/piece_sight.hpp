@@ -1,7 +1,7 @@
 #pragma once
-// What the GPU's metal sees of its own piece: the piece's sight mesh (piece/sight_mesh.hpp) as
-// two RGBA32F textures (texel_array.hpp), which metal_sight.glsl walks with texelFetch to follow
-// a reflected ray (METAL_SEES_PIECE).
+// What the GPU's metal and stones see of their own piece: the piece's sight mesh
+// (piece/sight_mesh.hpp) as two RGBA32F textures (texel_array.hpp), which piece_path.glsl walks
+// with texelFetch to follow the metal's reflected rays and the stones' exits (SEES_PIECE).
 
 #include "gpu/gl_handles.hpp"
 #include "piece/sight_mesh.hpp"

@@ -1,8 +1,9 @@
 #pragma once
-// What the GPU's metal sees of its own piece (gpu/piece_sight.hpp, metal_sight.glsl): the
-// metal's triangles and every stone's, where it sits, in one bounding volume hierarchy
-// (trace/bvh_build.hpp), packed as float4 records for the GPU. As the CPU reference's metal
-// does (render/piece_tracer.cpp), a ray that meets the piece sees it and not the environment.
+// What the GPU's metal and stones see of their own piece (gpu/piece_sight.hpp,
+// piece_path.glsl): the metal's triangles and every stone's, where it sits, in one bounding
+// volume hierarchy (trace/bvh_build.hpp), packed as float4 records for the GPU. As in the CPU
+// reference (render/piece_tracer.cpp), a ray that meets the piece sees it and not the
+// environment.
 //
 // Layout, four floats a record (an RGBA32F texel, gpu/texel_array.hpp):
 //   node i:     texel 2i     (lo.xyz, first)   texel 2i + 1 (hi.xyz, count; 0: inner node,

@@ -325,7 +325,7 @@ void KioskSession::rebuild_scene(double now_s) {
     }
     const std::string settled = scene_->renderer().method().describe();
     if (!settled.empty()) log_info(scene_->renderer().method_name() + ": " + settled);
-    if (const std::string& note = scene_->renderer().metal_sight_note(); !note.empty()) {
+    if (const std::string& note = scene_->renderer().sight_note(); !note.empty()) {
         log_error(note);
     }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());

@@ -139,10 +139,12 @@ TEST(GpuPiece, AStoneTurnedAndMovedInAPieceIsTracedInItsOwnFrame) {
 // only the metal (PieceSight::metal_only) says what stones in the cubes could gain at most
 // (15.2 and 12.1 dB).
 // The small stones drawn must score above a GPU picture without them by a clear margin (1 dB).
-// The metal of a still view sees the piece (metal_sight.glsl, METAL_SEES_PIECE): the mean of its
-// frames (17: the first, the moving view's own, then four rounds of its tiles) must come nearer
-// the reference's metal than a moving frame's, which sees only the environment, by a clear
-// margin (5 dB).
+// In a still view the metal and the stones follow their rays through the piece
+// (metal_sight.glsl, stone_sight.glsl): the mean of its frames (17: the first, the moving
+// view's own, then four rounds of its tiles) must come nearer the reference than a moving
+// frame, which sees the environment and the cubes, by a clear margin: the metal by 5 dB, each
+// class of stones, which see their neighbours, claws, walls and beads, by 3 dB (measured: the
+// metal 13.3 to 20.1 dB, the centre stone 15.2 to 20.7, the small stones 12.1 to 16.9).
 TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     ASSERT_TRUE(gpu_test::context().ok());
     auto halo = load_piece(std::filesystem::path(GEM_CONFIG_DIR) / "pieces" / "halo.toml");
@@ -201,7 +203,9 @@ TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
                 metal_c = over(metal_mask, gpu, truth), missing_c = over(small_mask, bare, truth),
                 centre_unseen = over(centre_mask, gpu, stones_unseen.value()),
                 small_unseen = over(small_mask, gpu, stones_unseen.value()),
-                metal_still = over(metal_mask, still, truth);
+                metal_still = over(metal_mask, still, truth),
+                centre_still = over(centre_mask, still, truth),
+                small_still = over(small_mask, still, truth);
     const double centre = centre_c.psnr, small = small_c.psnr, small_missing = missing_c.psnr;
     std::printf(
         "halo ring, GPU trace against the CPU reference: centre stone %.1f dB, mean ΔE00 %.1f; "
@@ -212,15 +216,21 @@ TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
         "the same against a reference whose stones see only the metal: centre stone %.1f dB, "
         "mean ΔE00 %.1f; small stones %.1f dB, %.1f\n",
         centre_unseen.psnr, centre_unseen.delta_e, small_unseen.psnr, small_unseen.delta_e);
-    std::printf("its metal, the mean of 17 still frames that see the piece: %.1f dB, %.1f\n",
-                metal_still.psnr, metal_still.delta_e);
-    if (small < small_missing + 1.0 || metal_still.psnr < metal_c.psnr + 5.0) {
+    std::printf(
+        "the mean of 17 still frames that see the piece: centre stone %.1f dB, mean ΔE00 %.1f; "
+        "small stones %.1f dB, %.1f; metal %.1f dB, %.1f\n",
+        centre_still.psnr, centre_still.delta_e, small_still.psnr, small_still.delta_e,
+        metal_still.psnr, metal_still.delta_e);
+    if (small < small_missing + 1.0 || metal_still.psnr < metal_c.psnr + 5.0 ||
+        centre_still.psnr < centre + 3.0 || small_still.psnr < small + 3.0) {
         gpu_test::write_artifact(gpu, "piece_halo_gpu");
         gpu_test::write_artifact(still, "piece_halo_gpu_still");
         gpu_test::write_artifact(reference.value(), "piece_halo_reference");
     }
     EXPECT_GT(small, small_missing + 1.0);
     EXPECT_GT(metal_still.psnr, metal_c.psnr + 5.0);
+    EXPECT_GT(centre_still.psnr, centre + 3.0);
+    EXPECT_GT(small_still.psnr, small + 3.0);
 }
 
 // Culling the back faces of a closed metal mesh saves shading them, and must not change the
