@@ -11,35 +11,37 @@
 # machine (llvmpipe): its line "still view refined: N frames in T s, to depth D" with
 # picture.still_seconds 2, 5, 10 and 20 (the shipped config, render.method "trace", a catalogue
 # of the one piece: the diamond in its parametric platinum ring, or the halo). A still frame
-# there traces its stones and, from the second on, its metal's reflections of the piece
-# (metal_sight.glsl). "A GPU ten times faster": the kiosk's whole still frames' costs a tenth
-# (the diamond's 238 ms at depth 16, of which its ring's reflections about 150; the halo's
-# 950 ms, of which 715), each deeper frame's stones dearer in proportion to the depth, so the
-# still frames deepen as gpu/still_schedule.hpp says (16, 32, then 64). Measured 2026-12-05.
+# there traces its stones and, from the second on, its metal's reflections and its stones'
+# exits through the piece (metal_sight.glsl, stone_sight.glsl). "A GPU ten times faster": the
+# kiosk's whole still frames' costs a tenth (the diamond's about 285 ms at depth 16, of which
+# the rays through its ring about 197; the halo's about 1,173 ms, of which 938: bench_pieces'
+# still frames' metal and stone passes added to the frames before the stones' rays), each
+# deeper frame's stones dearer in proportion to the depth, so the still frames deepen as
+# gpu/still_schedule.hpp says (16, 32, then 64). Measured 2026-12-06.
 if (!exists("out")) out = 'docs/images/accuracy'
 $diamond_here << EOD
-2.2 8.27
-5.1 6.89
-10.2 4.97
-20.4 3.29
+2.3 9.15
+5.2 7.22
+10.2 5.18
+20.0 3.48
 EOD
 $diamond_fast << EOD
-2.0 3.56
-5.0 2.35
-10.0 1.77
-20.0 1.43
+2.0 3.77
+5.0 2.49
+9.9 1.82
+20.0 1.45
 EOD
 $halo_here << EOD
-2.0 6.50
-5.5 5.35
-10.7 4.55
-20.6 3.97
+3.0 6.40
+5.6 5.29
+10.9 4.31
+20.5 3.84
 EOD
 $halo_fast << EOD
-1.6 4.10
-4.7 3.53
-9.5 3.27
-19.2 3.18
+1.9 3.84
+4.9 3.12
+10.0 2.88
+19.9 2.69
 EOD
 set terminal pngcairo size 900,460 font 'DejaVu Sans,11' linewidth 1.5
 set output out.'/still-view-by-time.png'

@@ -8,15 +8,16 @@
 // time, and none is kept), followed through the piece (piece_path.glsl), and what it meets less
 // what the cube and the lights gave it is added, weighed by the sum of the weights over the
 // chosen one's: a control variate, whose mean over the still frames is every exit seeing the
-// piece. An exit the cube showed right adds nothing and no noise. The chosen exit is seen
-// along its own direction; what fire moved the other channels' lookups by stays in the cube's
-// part. Each tile traces in its turn (sight_traced()), as the metal's do. Compiled in with
+// piece. An exit the cube showed right adds nothing and no noise. Fire stays in the cube's
+// part: the chosen exit is seen along its own direction, not the ones first-order fire moves
+// each channel's lookup to, and where each channel is traced at its own wavelength
+// (FIRE_EXACT) the middle one's exits stand for all three. Each tile traces in its turn (sight_traced()), as the metal's do. Compiled in with
 // SEES_PIECE; follows shading.glsl and piece_path.glsl. The stone's own frame, but for the
 // path, in the piece's (u_frame_rotation, u_frame_origin).
 
 #ifdef SEES_PIECE
 bool g_sight_on = false;     // this pixel traces in this frame
-vec3 g_channel_mix = vec3(1.0);  // FIRE_EXACT: the weights of the channels a trace adds to
+vec3 g_channel_mix = vec3(1.0);  // FIRE_EXACT: what a trace's exits add to the channels
 float g_sight_total = 0.0;   // the candidates' weights so far
 float g_sight_chosen = 0.0;  // ... and the chosen one's
 vec3 g_sight_p;

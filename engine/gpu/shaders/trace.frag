@@ -652,7 +652,10 @@ void main() {
         reflected[k] = s.x;
         vec3 d;
 #ifdef SEES_PIECE
-        g_channel_mix = u_channel_mix[k];
+        // One channel's exits are followed into the piece, for all three: one trace's exit
+        // weighed by its own channel's column made the correction a wavelength's colour, a
+        // rainbow grain on small stones after 16 frames (stone_sight.glsl).
+        g_channel_mix = k == 1 ? u_channel_mix * vec3(1.0) : vec3(0.0);
 #endif
         if (refract_ray(direction, n, kAir, ior, d) && s.y > 0.0) {
 #ifdef NON_CONVEX
