@@ -93,13 +93,17 @@ TEST(StillSchedule, AFrameLongerThanTheBoundIsDrawnInBandsAndTooManyBandsTraceSh
     EXPECT_EQ(d[2], std::make_pair(16, 2));
     EXPECT_EQ(d[16], std::make_pair(32, 3));
     EXPECT_EQ(d[40], std::make_pair(64, 6));
-    // 20 ms per unit: 64 would take 13 bands of 100 ms, more than kMostBands: 32 in 7.
+    // 20 ms per unit: 64 takes 13 bands of 100 ms, within kMostBands (16).
     StillSchedule slower(bound);
     d = frames_of(slower, 20.0, 64);
-    EXPECT_EQ(d[40], std::make_pair(32, 7));
-    // 80 ms per unit: 16 itself takes 13; never shallower than the first depth, in at most 8.
+    EXPECT_EQ(d[40], std::make_pair(64, 13));
+    // 40 ms per unit: 64 would take 26, more than kMostBands: 32 in 13.
+    StillSchedule slower_still(bound);
+    d = frames_of(slower_still, 40.0, 64);
+    EXPECT_EQ(d[40], std::make_pair(32, 13));
+    // 160 ms per unit: 16 itself takes 26; never shallower than the first depth, in at most 16.
     StillSchedule slowest(bound);
-    d = frames_of(slowest, 80.0, 64);
+    d = frames_of(slowest, 160.0, 64);
     EXPECT_EQ(d[40], std::make_pair(16, StillSchedule::kMostBands));
 }
 
