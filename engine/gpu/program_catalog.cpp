@@ -5,15 +5,18 @@
 namespace gem::gpu {
 namespace {
 
-std::vector<std::string> trace_sources() {
+// A stone method's fragment shader: the shading, what a piece's still frames follow through
+// the piece (stone_sight.glsl), then the method's own file.
+std::vector<std::string> stone_sources(const char* method) {
     return {"camera.glsl", "texel.glsl",      "stone.glsl",       "specular.glsl", "shading.glsl",
-            "metal.glsl",  "piece_path.glsl", "stone_sight.glsl", "trace.frag"};
+            "metal.glsl",  "piece_path.glsl", "stone_sight.glsl", method};
 }
 
 }  // namespace
 
 std::vector<ProgramSpec> all_program_specs() {
-    constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
+    constexpr std::uint32_t kTableFeatures =
+        kShadingFeatures | kFireFirstOrder | kTwoViews | kSeesPiece;
     constexpr std::uint32_t kTraceFeatures =
         kShadingFeatures | kFireFirstOrder | kFireExact | kSeesPiece;
     return {
@@ -21,23 +24,19 @@ std::vector<ProgramSpec> all_program_specs() {
         // The thesis' shading stage from ray-tables (table_method.hpp).
         // Every stone method draws the stone pass (stone.vert, stone_geometry.hpp) and reads
         // the facets from stone.glsl; each differs in its fragment shader's last file.
-        {"table",
-         {"stone.vert"},
-         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
-         {},
-         kTableFeatures},
+        // In a piece's still frames a method's exits follow the piece (stone_sight.glsl).
+        {"table", {"stone.vert"}, stone_sources("table.frag"), {}, kTableFeatures},
         {"table_non_convex",
          {"stone.vert"},
-         {"camera.glsl", "texel.glsl", "stone.glsl", "specular.glsl", "shading.glsl", "table.frag"},
+         stone_sources("table.frag"),
          {"NON_CONVEX"},
          kTableFeatures},
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
-        // In a piece's still frames its exits follow the piece (stone_sight.glsl).
-        {"trace", {"stone.vert"}, trace_sources(), {}, kTraceFeatures},
+        {"trace", {"stone.vert"}, stone_sources("trace.frag"), {}, kTraceFeatures},
         // A non-convex stone's fire is traced per channel in a still view only.
         {"trace_non_convex",
          {"stone.vert"},
-         trace_sources(),
+         stone_sources("trace.frag"),
          {"NON_CONVEX"},
          kShadingFeatures | kFireExact | kSeesPiece},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).

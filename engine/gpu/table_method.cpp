@@ -6,6 +6,7 @@
 
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/ring_renderer.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu/texel_array.hpp"
 #include "util/elapsed.hpp"
@@ -218,8 +219,12 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     }
 
     const bool dispersion = database_->params().dispersion;
+    // As the trace's (trace_method.cpp): a piece's still frames follow the stored exits into it.
+    const bool sees_piece =
+        frame.piece_sight != nullptr && frame.shading.model == ShadingModel::physical;
     const std::uint32_t features = shading_features(frame) | (dispersion ? kFireFirstOrder : 0u) |
-                                   (v1 != nullptr ? kTwoViews : 0u);
+                                   (v1 != nullptr ? kTwoViews : 0u) |
+                                   (sees_piece ? kSeesPiece : 0u);
     const auto attach = [&](const Program& built) { stone_->attach(built); };
     auto chosen = programs_.get(features, attach);
     if (!chosen) return Error{chosen.error()};
@@ -265,6 +270,10 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     if (v1 != nullptr) {
         p.set("u_blend", static_cast<float>(blend));
         bind_view(*v1, second, 1, 7);
+    }
+    // Units 11-15: sixteen in all, the least ES 3.0 guarantees a fragment shader.
+    if (sees_piece) {
+        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index, 11);
     }
 
     stone_->draw_front_faces();

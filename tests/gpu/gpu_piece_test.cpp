@@ -84,28 +84,9 @@ Image draw_on_gpu(const Piece* piece, const Stone* loose, double framing_mm,
         EXPECT_TRUE(stats.ok()) << stats.error();
         return target.value().read();
     }
-    // The frames in half floats, as the still picture keeps them: a frame's radiance may pass
-    // 1 or go below 0 where its metal's correction is weighed for the frames its tile skips.
-    const gpu::Texture colour = gpu::make_texture_2d(GL_RGBA16F, kSize, kSize, GL_NEAREST);
-    const gpu::Renderbuffer depth = gpu::make_depth_renderbuffer(kSize, kSize);
-    const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(colour.get(), depth.get());
-    glViewport(0, 0, kSize, kSize);
-    Image mean(kSize, kSize);
-    std::vector<float> frame(4 * kSize * kSize);
-    for (int i = 0; i < still_frames; ++i) {
-        gpu::StillFrame still;
-        still.index = i;
-        auto stats = renderer.value().render(camera.value(), gpu::FrameWait::frame, still);
-        EXPECT_TRUE(stats.ok()) << stats.error();
-        glReadPixels(0, 0, kSize, kSize, GL_RGBA, GL_FLOAT, frame.data());
-        for (int y = 0; y < kSize; ++y) {
-            for (int x = 0; x < kSize; ++x) {
-                const float* p = &frame[4 * ((kSize - 1 - y) * kSize + x)];
-                mean.at(x, y) += glm::vec4(p[0], p[1], p[2], p[3]) / float(still_frames);
-            }
-        }
-    }
-    return mean;
+    auto mean = gpu_test::mean_of_still_frames(renderer.value(), camera.value(), still_frames);
+    EXPECT_TRUE(mean.ok()) << mean.error();
+    return mean ? mean.value() : Image{};
 }
 
 TEST(GpuPiece, AStoneTurnedAndMovedInAPieceIsTracedInItsOwnFrame) {

@@ -60,13 +60,13 @@ TEST(GpuPrograms, EveryProgramBuildsWithEveryFeature) {
             ++built;
         }
     }
-    // table and table_non_convex test five switches (32 each), trace six less the 16 with
-    // both SEES_PIECE and SHADING_THESIS (48), trace_non_convex five less 8 (24), each with
+    // table, table_non_convex and trace test six switches less the 16 combinations with both
+    // SEES_PIECE and SHADING_THESIS (48 each), trace_non_convex five less 8 (24), each with
     // 0 .. 4 lights; the ring SEES_PIECE or not (2) and phong none, besides the light count.
     // Every one of these but the ring's, with 1 .. 4 lights, once more with a whole specular
     // power.
-    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (32 + 32 + 48 + 24 + 2 + 1) +
-                         4 * (32 + 32 + 48 + 24 + 1));
+    EXPECT_EQ(built, static_cast<int>(specs.size()) - 6 + 5 * (48 + 48 + 48 + 24 + 2 + 1) +
+                         4 * (48 + 48 + 48 + 24 + 1));
     auto clean = gpu::gl_check("building every program");
     EXPECT_TRUE(clean.ok()) << clean.error();
 }

@@ -3,6 +3,9 @@
 #include <cmath>
 #include <limits>
 #include <memory>
+#include <vector>
+
+#include "gpu/gl_handles.hpp"
 
 namespace gem::gpu_test {
 
@@ -47,6 +50,30 @@ Image difference_image(const Image& a, const Image& b, float gain) {
         out.pixels[p] = glm::vec4(glm::min(d, glm::vec3(1.0f)), 1.0f);
     }
     return out;
+}
+
+Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames) {
+    const int w = camera.width(), h = camera.height();
+    const gpu::Texture colour = gpu::make_texture_2d(GL_RGBA16F, w, h, GL_NEAREST);
+    const gpu::Renderbuffer depth = gpu::make_depth_renderbuffer(w, h);
+    const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(colour.get(), depth.get());
+    glViewport(0, 0, w, h);
+    Image mean(w, h);
+    std::vector<float> frame(4 * static_cast<std::size_t>(w) * h);
+    for (int i = 0; i < frames; ++i) {
+        gpu::StillFrame still;
+        still.index = i;
+        auto stats = renderer.render(camera, gpu::FrameWait::frame, still);
+        if (!stats) return Error{stats.error()};
+        glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, frame.data());
+        for (int y = 0; y < h; ++y) {
+            for (int x = 0; x < w; ++x) {
+                const float* p = &frame[4 * (static_cast<std::size_t>(h - 1 - y) * w + x)];
+                mean.at(x, y) += glm::vec4(p[0], p[1], p[2], p[3]) / float(frames);
+            }
+        }
+    }
+    return mean;
 }
 
 }  // namespace gem::gpu_test

@@ -7,6 +7,8 @@
 #include <string>
 
 #include "gpu/egl_context.hpp"
+#include "gpu/frame_renderer.hpp"
+#include "render/camera.hpp"
 #include "render/image.hpp"
 #include "util/result.hpp"
 
@@ -23,5 +25,11 @@ double psnr_srgb8(const Image& a, const Image& b, bool only_stone = false);
 std::filesystem::path write_artifact(const Image& image, const std::string& name);
 // An image of |a − b| × gain per channel, to look at when a comparison fails.
 Image difference_image(const Image& a, const Image& b, float gain = 4.0f);
+
+// The mean of the first `frames` frames of a still view at `camera` (their metal and stones
+// following their rays through a piece), unjittered, each kept in half floats as the still
+// picture keeps them: a frame's radiance may pass 1 or go below 0 where a correction is
+// weighed for the frames its tile skips. Drawn into a framebuffer of its own.
+Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames);
 
 }  // namespace gem::gpu_test

@@ -4,6 +4,7 @@
 // was folded by a symmetry g: stone = g^T stored) and shade it with shading.glsl. Two views
 // are blended by weight (between stored directions, TWO_VIEWS); one view is the nearest-view
 // method. FIRE_FIRST_ORDER: dispersion from each ray's d(dir)/dn (program_variants.hpp).
+// SEES_PIECE: in a piece's still frames, the exits followed into the piece (stone_sight.glsl).
 out vec4 o_colour;
 
 uniform float u_blend;      // weight of view 0; view 1 gets 1 - u_blend
@@ -71,22 +72,37 @@ void main() {
     vec2 p = image_plane(fragment_ndc(gl_FragCoord)) * u_image_scale;
     vec3 c0 = vec3(0.0);
     vec3 c1 = vec3(0.0);
-    bool hit0 = shade_view(p, u_pixels0, u_rays_a0, u_rays_b0, u_rays_c0, u_image_map0,
-                           u_to_stone0, u_side0, c0);
 #ifdef TWO_VIEWS
-    bool hit1 = shade_view(p, u_pixels1, u_rays_a1, u_rays_b1, u_rays_c1, u_image_map1,
-                           u_to_stone1, u_side1, c1);
     float w0 = u_blend;
 #else
-    bool hit1 = false;
     float w0 = 1.0;
 #endif
     float w1 = 1.0 - w0;
+#ifdef SEES_PIECE
+    // In a piece's still frames the stored exits are followed into it as the trace's are
+    // (stone_sight.glsl), each view's by its share of the blend.
+    start_sight();
+    g_channel_mix = vec3(w0);
+#endif
+    bool hit0 = shade_view(p, u_pixels0, u_rays_a0, u_rays_b0, u_rays_c0, u_image_map0,
+                           u_to_stone0, u_side0, c0);
+#ifdef TWO_VIEWS
+#ifdef SEES_PIECE
+    g_channel_mix = vec3(w1);
+#endif
+    bool hit1 = shade_view(p, u_pixels1, u_rays_a1, u_rays_b1, u_rays_c1, u_image_map1,
+                           u_to_stone1, u_side1, c1);
+#else
+    bool hit1 = false;
+#endif
     float coverage = (hit0 ? w0 : 0.0) + (hit1 ? w1 : 0.0);
     if (coverage <= 0.0) discard;
     // Straight colour with alpha = coverage: blending gives w0 c0 + w1 c1 + (1 - a) background.
     // Where the stone is drawn but a stored view saw it miss (its silhouette from another
     // direction), that view's share shows what is behind.
     vec3 sum = (hit0 ? w0 * c0 : vec3(0.0)) + (hit1 ? w1 * c1 : vec3(0.0));
+#ifdef SEES_PIECE
+    sum += stone_correction();
+#endif
     o_colour = vec4(sum / coverage, coverage);
 }
