@@ -138,7 +138,8 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         // Where the GPU cannot hold it, the metal sees the environment alone and the stones
         // their cubes, as a moving frame's do, and it says why: the piece is still shown.
         auto sight = PieceSight::make(sight_mesh(*metal, placed));
-        auto sees = sight ? r.ring_->see_piece(std::move(sight).value())
+        auto sees = sight ? r.ring_->see_piece(std::move(sight).value(),
+                                               glm::vec3(s.environment->mean_radiance()))
                           : Result<bool>(Error{sight.error()});
         if (!sees) {
             r.sight_note_ =

@@ -93,7 +93,8 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
     return r;
 }
 
-Result<bool> RingRenderer::see_piece(PieceSight sight) {
+Result<bool> RingRenderer::see_piece(PieceSight sight, const glm::vec3& environment_mean) {
+    environment_mean_ = (environment_mean.x + environment_mean.y + environment_mean.z) / 3.0f;
     ProgramVariants ring("ring", {});
     auto built = ring.build_every_light_count(kSeesPiece, [](const Program&) {});
     if (!built) return Error{built.error()};
@@ -162,6 +163,7 @@ void RingRenderer::set_path_uniforms(const Program& program, const ShadingSettin
     program.set("u_piece_k_s", static_cast<float>(lights.k_s));
     program.set("u_piece_k_st", static_cast<float>(lights.k_st));
     program.set("u_sample", still_sample - 1);
+    program.set("u_environment_mean", environment_mean_);
     // Far above a float's rounding of the metal's millimetres, far below a pixel.
     program.set("u_ray_offset_mm", static_cast<float>(2e-5 * std::max(radius_mm_, 1.0)));
 }

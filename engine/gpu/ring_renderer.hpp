@@ -36,8 +36,10 @@ class RingRenderer {
     static Result<RingRenderer> make(const MetalMesh& mesh, const EnvironmentCube& environment);
 
     // From now on the metal of a still view's frames sees `sight`, its own piece
-    // (metal_sight.glsl), and not only the environment.
-    Result<bool> see_piece(PieceSight sight);
+    // (metal_sight.glsl), and not only the environment, and so may the stones
+    // (set_piece_sight_uniforms()). `environment_mean`: the environment's radiance averaged
+    // over the sphere (Environment::mean_radiance()), by which the stones choose what to follow.
+    Result<bool> see_piece(PieceSight sight, const glm::vec3& environment_mean);
 
     // Draws the ring into the bound framebuffer with depth test and depth write (the stone
     // layer has written its depth already), opaque. Uses view_projection(camera,
@@ -78,6 +80,7 @@ class RingRenderer {
     ProgramVariants ring_;             // one per light count, all built by make()
     ProgramVariants ring_sees_piece_;  // ... seeing its piece (SEES_PIECE): see_piece()
     std::optional<PieceSight> sight_;
+    float environment_mean_ = 0.0f;  // its three channels' mean
     Program background_;
     MetalEnvironment environment_;
     VertexArray vertex_array_;

@@ -83,6 +83,21 @@ glm::dvec3 Environment::radiance(const glm::dvec3& d) const {
     return studio_radiance(d) * intensity_;
 }
 
+glm::dvec3 Environment::mean_radiance() const {
+    // Points of a Fibonacci lattice: equal areas of the sphere, z evenly spaced in (-1, 1),
+    // turned by the golden angle each.
+    constexpr int kDirections = 4096;
+    const double golden_angle = 3.14159265358979323846 * (3.0 - std::sqrt(5.0));
+    glm::dvec3 sum(0.0);
+    for (int i = 0; i < kDirections; ++i) {
+        const double z = 1.0 - (2.0 * i + 1.0) / kDirections;
+        const double r = std::sqrt(std::max(0.0, 1.0 - z * z));
+        const double phi = golden_angle * i;
+        sum += radiance({r * std::cos(phi), z, r * std::sin(phi)});
+    }
+    return sum / double(kDirections);
+}
+
 Environment Environment::with_intensity(double intensity) const {
     Environment scaled = *this;
     scaled.intensity_ = intensity_ * intensity;

@@ -29,6 +29,9 @@ class Environment {
 
     // Radiance arriving from unit direction `d` (i.e. seen looking along d).
     glm::dvec3 radiance(const glm::dvec3& d) const;
+    // The radiance averaged over every direction (4096 directions spread evenly over the
+    // sphere: a Fibonacci lattice). Computed, not kept: call it once per use.
+    glm::dvec3 mean_radiance() const;
     // The same surroundings, every radiance multiplied by `intensity` (a lighting preset's
     // environment level).
     Environment with_intensity(double intensity) const;

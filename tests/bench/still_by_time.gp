@@ -32,16 +32,16 @@ $diamond_fast << EOD
 20.0 1.45
 EOD
 $halo_here << EOD
-3.0 6.40
-5.6 5.29
-10.9 4.31
-20.5 3.84
+3.0 6.45
+5.6 5.39
+10.9 4.38
+20.5 3.90
 EOD
 $halo_fast << EOD
-1.9 3.84
-4.9 3.12
-10.0 2.88
-19.9 2.69
+1.9 3.90
+4.9 3.18
+10.0 2.93
+19.9 2.70
 EOD
 set terminal pngcairo size 900,460 font 'DejaVu Sans,11' linewidth 1.5
 set output out.'/still-view-by-time.png'

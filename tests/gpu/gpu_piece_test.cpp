@@ -125,7 +125,7 @@ TEST(GpuPiece, AStoneTurnedAndMovedInAPieceIsTracedInItsOwnFrame) {
 // view's own, then four rounds of its tiles) must come nearer the reference than a moving
 // frame, which sees the environment and the cubes, by a clear margin: the metal by 5 dB, each
 // class of stones, which see their neighbours, claws, walls and beads, by 3 dB (measured: the
-// metal 13.3 to 20.1 dB, the centre stone 15.2 to 20.7, the small stones 12.1 to 16.9).
+// metal 13.3 to 20.1 dB, the centre stone 15.2 to 21.3, the small stones 12.1 to 17.5).
 TEST(GpuPiece, AHaloRingsStonesAgainstTheirExactReference) {
     ASSERT_TRUE(gpu_test::context().ok());
     auto halo = load_piece(std::filesystem::path(GEM_CONFIG_DIR) / "pieces" / "halo.toml");

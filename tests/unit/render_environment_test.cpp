@@ -3,6 +3,7 @@
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <vector>
 
 #include <gtest/gtest.h>
 
@@ -163,4 +164,24 @@ TEST(Environment, WithIntensityScalesEveryRadiance) {
     }
     EXPECT_EQ(gem::Environment::uniform({1, 2, 3}).with_intensity(3.0).radiance({0, 0, 1}),
               glm::dvec3(3, 6, 9));
+}
+
+TEST(Environment, MeanRadianceIsTheAverageOverTheSphere) {
+    // A uniform sky is its colour everywhere; an image bright above the horizon and black
+    // below sends half its brightness on average (each hemisphere is half the sphere), and a
+    // band of the top sixth of its rows (above latitude 60°) sends (1 - sin 60°) / 2 of it.
+    const glm::dvec3 uniform = gem::Environment::uniform({0.2, 0.4, 0.8}).mean_radiance();
+    EXPECT_NEAR(uniform.x, 0.2, 1e-12);
+    EXPECT_NEAR(uniform.z, 0.8, 1e-12);
+    const int w = 64, h = 96;
+    std::vector<glm::vec3> upper(w * h, glm::vec3(0.0f)), cap(w * h, glm::vec3(0.0f));
+    for (int y = 0; y < h / 2; ++y) {
+        for (int x = 0; x < w; ++x) upper[y * w + x] = glm::vec3(1.0f);
+    }
+    for (int y = 0; y < h / 6; ++y) {
+        for (int x = 0; x < w; ++x) cap[y * w + x] = glm::vec3(1.0f);
+    }
+    EXPECT_NEAR(gem::Environment::from_pixels(w, h, upper).mean_radiance().y, 0.5, 2e-3);
+    EXPECT_NEAR(gem::Environment::from_pixels(w, h, cap).mean_radiance().y,
+                (1.0 - std::sqrt(3.0) / 2.0) / 2.0, 3e-3);
 }
