@@ -48,10 +48,13 @@ std::string FrameStats::summary() const {
                                   : "no frames";
     }
     std::vector<double> draw;
+    std::vector<double> moving;
+    std::vector<double> still;
     std::vector<double> interval;
     std::vector<double> latency;
     for (const FrameRecord& f : frames_) {
         draw.push_back(f.draw_ms);
+        (f.still < 0 ? moving : still).push_back(f.draw_ms);
         if (f.interval_ms > 0.0) interval.push_back(f.interval_ms);
         if (f.latency_ms >= 0.0) latency.push_back(f.latency_ms);
     }
@@ -65,6 +68,12 @@ std::string FrameStats::summary() const {
         s = std::to_string(total_ - shown_again_ - while_probing_) + " frames, the last " + s;
     }
     s += describe("draw", draw);
+    if (!moving.empty() && !still.empty()) {
+        s += "; " +
+             describe(("moving (" + std::to_string(moving.size()) + ") draw").c_str(), moving);
+        s += "; " +
+             describe(("still view (" + std::to_string(still.size()) + ") draw").c_str(), still);
+    }
     if (!interval.empty()) s += "; " + describe("interval", interval);
     if (!latency.empty()) {
         s += "; " + describe("input-to-frame", latency) + " (" + std::to_string(latency.size()) +
@@ -85,11 +94,11 @@ bool FrameStats::write_csv(const std::string& path, std::string& error) const {
         error = "cannot write " + path;
         return false;
     }
-    out << "frame,start_s,draw_ms,interval_ms,latency_ms,streaming_ms\n";
+    out << "frame,start_s,draw_ms,interval_ms,latency_ms,streaming_ms,still\n";
     for (std::size_t i = 0; i < frames_.size(); ++i) {
         const FrameRecord& f = frames_[i];
         out << i << ',' << f.start_s << ',' << f.draw_ms << ',' << f.interval_ms << ','
-            << f.latency_ms << ',' << f.streaming_ms << '\n';
+            << f.latency_ms << ',' << f.streaming_ms << ',' << f.still << '\n';
     }
     out.flush();
     if (!out) {

@@ -24,6 +24,9 @@ struct FrameRecord {
     // the safe choice, its frame rate halved): counted in total() and named apart, not in the
     // drawing figures, which are the chosen method's.
     bool probing = false;
+    // Its place in a still view (gpu::StillFrame::index: 0 its first, then its refining
+    // frames, each band of one a record of its own); -1: a frame of a moving view.
+    int still = -1;
 };
 
 class FrameStats {
@@ -36,7 +39,9 @@ class FrameStats {
     long total() const { return total_; }  // every frame added, kept or not, drawn or not
 
     // "600 frames in 40.1 s: 15.0 frames/s; draw ms p50 63.1 p90 70.2 p99 81.0 max 90.3;
-    //  input-to-frame ms p50 .. (n events)".
+    //  input-to-frame ms p50 .. (n events)", and where both kinds were drawn, the moving
+    //  frames' draw and the still views' apart: a still view's frames trace deeper and draw
+    //  in bands, and a figure of both is a figure of neither.
     std::string summary() const;
     // One row per frame; errors name the file.
     bool write_csv(const std::string& path, std::string& error) const;

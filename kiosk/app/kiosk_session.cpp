@@ -497,6 +497,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     FrameRecord record;
     record.start_s = monotonic_now_s();
     record.probing = probe_ != nullptr;
+    record.still = scene_picture_->still_frame().index;
     last_frame_start_s_ = record.start_s;
     if (redraw) {
         glm::dvec3 omega(0.0);

@@ -47,6 +47,27 @@ TEST(FrameStats, FramesShownAgainCountButDoNotTime) {
     EXPECT_NE(s.find("3 more shown again undrawn"), std::string::npos) << s;
 }
 
+TEST(FrameStats, MovingFramesAndStillViewsAreTimedApart) {
+    FrameStats stats;
+    // Two moving frames of 30 ms, then a still view's first frame (40 ms) and two bands of
+    // 100 ms: every frame's p50 is the third of five by nearest rank, 40; the moving ones' the
+    // first of two, 30; the still view's the second of three, 100.
+    for (int i = 0; i < 2; ++i) stats.add({.start_s = 0.1 * i, .draw_ms = 30.0});
+    stats.add({.start_s = 0.2, .draw_ms = 40.0, .still = 0});
+    stats.add({.start_s = 0.3, .draw_ms = 100.0, .still = 1});
+    stats.add({.start_s = 0.4, .draw_ms = 100.0, .still = 1});
+    const std::string s = stats.summary();
+    EXPECT_NE(s.find("draw ms p50 40.0"), std::string::npos) << s;
+    EXPECT_NE(s.find("moving (2) draw ms p50 30.0 p90 30.0"), std::string::npos) << s;
+    EXPECT_NE(s.find("still view (3) draw ms p50 100.0 p90 100.0 p99 100.0 max 100.0"),
+              std::string::npos)
+        << s;
+    // Frames of one kind only: no split.
+    FrameStats moving_only;
+    moving_only.add({.draw_ms = 30.0});
+    EXPECT_EQ(moving_only.summary().find("moving ("), std::string::npos);
+}
+
 TEST(FrameStats, CsvToAnUnwritablePlaceIsAnError) {
     FrameStats stats;
     stats.add({});
