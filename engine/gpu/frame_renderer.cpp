@@ -143,7 +143,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
                           : Result<bool>(Error{sight.error()});
         if (!sees) {
             r.sight_note_ =
-                "the metal and stones see the environment alone, not their piece: " + sees.error();
+                "the metal sees the environment alone and the stones their cubes, not their "
+                "piece: " +
+                sees.error();
         }
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         r.ring_radius_mm_ = metal->radius_mm();

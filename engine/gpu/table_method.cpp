@@ -12,6 +12,12 @@
 #include "util/elapsed.hpp"
 
 namespace gem::gpu {
+
+// The piece's textures after the views' (units 3-10): sixteen in all, the least ES 3.0
+// guarantees a fragment shader.
+constexpr int kPieceSightUnit = 11;
+static_assert(kPieceSightUnit + RingRenderer::kPieceSightUnits <= 16);
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -271,9 +277,9 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         p.set("u_blend", static_cast<float>(blend));
         bind_view(*v1, second, 1, 7);
     }
-    // Units 11-15: sixteen in all, the least ES 3.0 guarantees a fragment shader.
     if (sees_piece) {
-        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index, 11);
+        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index,
+                                                    kPieceSightUnit);
     }
 
     stone_->draw_front_faces();

@@ -28,6 +28,7 @@ namespace {
 constexpr int kEnvironmentUnit = 0;
 constexpr int kStoneUnit = 1;
 constexpr int kPieceSightUnit = 2;  // and the next RingRenderer::kPieceSightUnits - 1
+static_assert(kPieceSightUnit + RingRenderer::kPieceSightUnits <= 16);
 
 // A GLSL float literal with nine significant digits (a float's round trip) and always a point
 // or an exponent: "1" would be an int, and GLSL ES does not mix ints into float arithmetic.

@@ -65,6 +65,7 @@ vec3 metal_radiance(vec3 p, vec3 n, vec3 v) {
     }
     vec3 r = reflect(-v, n);
     vec2 scale_bias = texture(u_environment_brdf, vec2(n_v, u_metal_roughness)).rg;
-    colour += textureLod(u_metal_environment, r, 0.0).rgb * (u_metal_f0 * scale_bias.x + scale_bias.y);
+    colour += textureLod(u_metal_environment, r, 0.0).rgb *
+              (u_metal_f0 * scale_bias.x + scale_bias.y);
     return colour;
 }

@@ -196,11 +196,11 @@ float dielectric_fresnel(float c, float n1, float n2) {
     return 0.5 * (rs * rs + rp * rp);
 }
 
-// What a ray that leaves the metal at o along d sees of the piece, one path: a stone it meets
-// is entered or reflected off, and within it each face reflects or lets out, chosen by its
-// Fresnel reflectance (so the path keeps its weight), dimmed by the body's absorption, as the
-// reference's trace weighs its branches; the metal it meets reflects it again, drawn from GGX;
-// the environment where it leaves the piece. As the reference's four passes from the eye, the
+// What a ray that leaves the metal or a stone at o along d sees of the piece, one path: a
+// stone it meets is entered or reflected off, and within it each face reflects or lets out,
+// chosen by its Fresnel reflectance (so the path keeps its weight), dimmed by the body's
+// absorption, as the reference's trace weighs its branches; the metal it meets reflects it
+// again, drawn from GGX; the environment where it leaves the piece. As the reference's four passes from the eye, the
 // path meets at most three surfaces after the pixel's, the last of them, if metal, shaded by
 // the split sum; inside a stone it follows at most the trace's eight segments.
 // One walk of the hierarchy a step, from outside or from inside a stone, at one place in the

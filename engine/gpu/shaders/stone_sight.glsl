@@ -33,8 +33,10 @@ vec3 g_sight_weight;
 float g_sight_k;
 
 // The environment's mean radiance (its channels' mean): what an exit sees where its cube showed
-// it dark, for the chance of following it.
+// it dark, for the chance of following it (and a little more: a black environment's exits may
+// still meet lit metal).
 uniform float u_environment_mean;
+const float kLeastShown = 1e-3;
 
 void start_sight() {
     g_sight_on = sight_traced();
@@ -44,7 +46,8 @@ void start_sight() {
 void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k, vec3 seen) {
     if (!g_sight_on) return;
     vec3 w = g_channel_mix * weight;
-    float size = (abs(w.r) + abs(w.g) + abs(w.b)) * (dot(seen, vec3(1.0 / 3.0)) + u_environment_mean);
+    float shown = dot(seen, vec3(1.0 / 3.0)) + u_environment_mean + kLeastShown;
+    float size = (abs(w.r) + abs(w.g) + abs(w.b)) * shown;
     if (size <= 0.0) return;
     g_sight_total += size;
     if (next_random() * g_sight_total >= size) return;
