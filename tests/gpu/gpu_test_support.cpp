@@ -52,7 +52,8 @@ Image difference_image(const Image& a, const Image& b, float gain) {
     return out;
 }
 
-Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames) {
+Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames,
+                                   const StillSpectrum* spectrum, bool moving) {
     const int w = camera.width(), h = camera.height();
     const gpu::Texture colour = gpu::make_texture_2d(GL_RGBA16F, w, h, GL_NEAREST);
     const gpu::Renderbuffer depth = gpu::make_depth_renderbuffer(w, h);
@@ -62,7 +63,8 @@ Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& c
     std::vector<float> frame(4 * static_cast<std::size_t>(w) * h);
     for (int i = 0; i < frames; ++i) {
         gpu::StillFrame still;
-        still.index = i;
+        still.index = moving ? -1 : i;
+        if (spectrum != nullptr) still.wavelengths = &spectrum->frame(i);
         auto stats = renderer.render(camera, gpu::FrameWait::frame, still);
         if (!stats) return Error{stats.error()};
         glReadPixels(0, 0, w, h, GL_RGBA, GL_FLOAT, frame.data());

@@ -8,6 +8,7 @@
 
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
+#include "optics/spectrum.hpp"
 #include "render/camera.hpp"
 #include "render/image.hpp"
 #include "util/result.hpp"
@@ -29,7 +30,11 @@ Image difference_image(const Image& a, const Image& b, float gain = 4.0f);
 // The mean of the first `frames` frames of a still view at `camera` (their metal and stones
 // following their rays through a piece), unjittered, each kept in half floats as the still
 // picture keeps them: a frame's radiance may pass 1 or go below 0 where a correction is
-// weighed for the frames its tile skips. Drawn into a framebuffer of its own.
-Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames);
+// weighed for the frames its tile skips. Drawn into a framebuffer of its own. `spectrum`:
+// each frame traced at its own wavelengths (a spectral still view); `moving`: the frames drawn
+// as a moving view's, following nothing through the piece (with `spectrum`, the same
+// wavelengths without the piece's rays).
+Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames,
+                                   const StillSpectrum* spectrum = nullptr, bool moving = false);
 
 }  // namespace gem::gpu_test
