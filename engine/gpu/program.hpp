@@ -24,7 +24,7 @@ struct ProgramSpec {
     std::string name;                   // for messages: "table"
     std::vector<std::string> vertex;    // chunk names, main file last
     std::vector<std::string> fragment;  // chunk names, main file last
-    std::vector<std::string> defines;   // "NON_CONVEX", "MAX_LIGHTS 4"
+    std::vector<std::string> defines;   // "NON_CONVEX", "LIGHT_COUNT 2"
     // The ShaderFeature bits its sources test (program_variants.hpp): the tests build every
     // combination.
     std::uint32_t features = 0;

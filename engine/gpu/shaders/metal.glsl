@@ -7,17 +7,11 @@
 // direction (render/lights.hpp). Its reflection is the BRDF integrated over that lobe,
 // approximated as the lobe's solid angle 2π/(h+1) times a GGX widened by it: near their peaks
 // both are Gaussians in the half-vector's angle, of variances alpha²/4 and 1/(4h), so the
-// widened alpha² is alpha² + 1/h. LIGHT_COUNT is compiled in (program_variants.hpp).
+// widened alpha² is alpha² + 1/h. Follows specular.glsl (the lights).
 // Everything is in the piece's frame, linear RGB. The uniforms carry the metal's and the
 // piece's names: a stone's program that follows its exits onto the metal (stone_sight.glsl)
 // holds them beside its own, whose lights are in the stone's frame.
 
-#ifndef MAX_LIGHTS
-#define MAX_LIGHTS 4
-#endif
-#ifndef LIGHT_COUNT
-#define LIGHT_COUNT 0
-#endif
 const float kPi = 3.14159265358979;
 
 uniform samplerCube u_metal_environment;  // filtered for this metal's roughness
@@ -52,8 +46,7 @@ vec3 metal_radiance(vec3 p, vec3 n, vec3 v) {
     float n_v = max(dot(n, v), 1e-4);
     vec3 colour = vec3(0.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vec4 lp = u_piece_light_position[i];
-        vec3 l = normalize(lp.w > 0.5 ? lp.xyz - p : lp.xyz);
+        vec3 l = toward_light(u_piece_light_position[i], p);
         float n_l = dot(n, l);
         if (n_l <= 0.0) continue;
         vec3 h = normalize(l + v);

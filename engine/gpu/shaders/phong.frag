@@ -4,13 +4,6 @@
 // transparency, the share of the background that shows through each facet). Follows
 // stone.glsl (the facet planes) and specular.glsl ((r.v)^h).
 
-#ifndef MAX_LIGHTS
-#define MAX_LIGHTS 4
-#endif
-#ifndef LIGHT_COUNT
-#define LIGHT_COUNT 0  // compiled in (program_variants.hpp)
-#endif
-
 in vec3 v_position;
 flat in uint v_facet;
 out vec4 o_colour;
@@ -37,8 +30,7 @@ void main() {
     vec3 diffuse = vec3(0.0);
     vec3 specular = vec3(0.0);
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vec4 lp = u_light_position[i];
-        vec3 l = normalize(lp.w > 0.5 ? lp.xyz - v_position : lp.xyz);
+        vec3 l = toward_light(u_light_position[i], v_position);
         float n_l = dot(n, l);
         if (n_l <= 0.0) continue;
         diffuse += u_light_colour[i] * n_l;

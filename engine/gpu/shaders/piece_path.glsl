@@ -118,8 +118,7 @@ int nearest_triangle(vec3 o, vec3 d, bool inside, float t_max, out vec3 tuv) {
 vec3 escaped(vec3 p, vec3 d, float k, vec3 from_normal) {
     vec3 sum = textureLod(u_environment_sharp, d, 0.0).rgb;
     for (int i = 0; i < LIGHT_COUNT; ++i) {
-        vec4 lp = u_piece_light_position[i];
-        vec3 l = normalize(lp.w > 0.5 ? lp.xyz - p : lp.xyz);
+        vec3 l = toward_light(u_piece_light_position[i], p);
         float c = dot(d, l);
         if (c > 0.0 && dot(from_normal, l) >= 0.0) {
             sum += u_piece_light_colour[i] * (k * specular_power(c));

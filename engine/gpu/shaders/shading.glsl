@@ -8,13 +8,6 @@
 // far, ABSORBING a body that absorbs (sigma > 0; program_variants.hpp: paths are compiled in,
 // not picked by uniforms).
 
-#ifndef MAX_LIGHTS
-#define MAX_LIGHTS 4
-#endif
-#ifndef LIGHT_COUNT
-#define LIGHT_COUNT 0
-#endif
-
 uniform samplerCube u_environment;
 uniform float u_cube_half_mm;  // the virtual cube's half side about the piece's centre
 // The stone's frame in the piece's, where the cube stands (identity for a loose stone).
