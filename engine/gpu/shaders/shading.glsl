@@ -115,8 +115,9 @@ vec3 light_specular(vec3 p, vec3 d, vec3 n, int facet, float k) {
 }
 
 #ifdef SEES_PIECE
-// stone_sight.glsl: an exit (or the first reflection) that may be followed into the piece.
-void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k, vec3 seen);
+// stone_sight.glsl: an exit (or the first reflection) that may be followed into the piece,
+// with what the cube (`env`) and the lights showed it.
+void sight_candidate(vec3 p, vec3 d, vec3 n, vec3 weight, float k, vec3 env, vec3 lights);
 #endif
 
 // The first reflected ray's share of the pixel.
@@ -126,11 +127,11 @@ vec3 shade_reflected(vec3 p, vec3 d, vec3 n, int facet, float weight) {
     return weight * (light_specular(p, d, n, facet, u_k_s) + env * u_alpha +
                      u_stone_colour * (1.0 - u_alpha));
 #else
-    vec3 seen = env + light_specular(p, d, n, facet, u_k_s);
+    vec3 lights = light_specular(p, d, n, facet, u_k_s);
 #ifdef SEES_PIECE
-    sight_candidate(p, d, n, facet, vec3(weight), u_k_s, seen);
+    sight_candidate(p, d, n, vec3(weight), u_k_s, env, lights);
 #endif
-    return weight * seen;
+    return weight * (env + lights);
 #endif
 }
 
@@ -145,10 +146,10 @@ vec3 shade_exit(vec3 p, vec3 d, vec3 n, int facet, float weight, float path_mm, 
 #else
     vec3 w = vec3(weight);  // exp(0) per exit skipped
 #endif
-    vec3 seen = env + light_specular(p, d, n, facet, u_k_st);
+    vec3 lights = light_specular(p, d, n, facet, u_k_st);
 #ifdef SEES_PIECE
-    sight_candidate(p, d, n, facet, w, u_k_st, seen);
+    sight_candidate(p, d, n, w, u_k_st, env, lights);
 #endif
-    return w * seen;
+    return w * (env + lights);
 #endif
 }

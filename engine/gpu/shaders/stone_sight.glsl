@@ -28,9 +28,10 @@ float g_sight_chosen = 0.0;  // ... and the chosen one's
 vec3 g_sight_p;
 vec3 g_sight_d;
 vec3 g_sight_n;
-int g_sight_facet;
 vec3 g_sight_weight;
 float g_sight_k;
+vec3 g_sight_env;     // what the cube showed it
+vec3 g_sight_lights;  // ... and the lights, which the chosen exit need not be shaded for again
 
 // The environment's mean radiance (its channels' mean): what an exit sees where its cube showed
 // it dark, for the chance of following it (and a little more: a black environment's exits may
@@ -43,10 +44,10 @@ void start_sight() {
     if (g_sight_on) seed_random();
 }
 
-void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k, vec3 seen) {
+void sight_candidate(vec3 p, vec3 d, vec3 n, vec3 weight, float k, vec3 env, vec3 lights) {
     if (!g_sight_on) return;
     vec3 w = g_channel_mix * weight;
-    float shown = dot(seen, vec3(1.0 / 3.0)) + u_environment_mean + kLeastShown;
+    float shown = dot(env + lights, vec3(1.0 / 3.0)) + u_environment_mean + kLeastShown;
     float size = (abs(w.r) + abs(w.g) + abs(w.b)) * shown;
     if (size <= 0.0) return;
     g_sight_total += size;
@@ -55,15 +56,21 @@ void sight_candidate(vec3 p, vec3 d, vec3 n, int facet, vec3 weight, float k, ve
     g_sight_p = p;
     g_sight_d = d;
     g_sight_n = n;
-    g_sight_facet = facet;
     g_sight_weight = w;
     g_sight_k = k;
+    g_sight_env = env;
+    g_sight_lights = lights;
 }
 
 vec3 stone_correction() {
     if (g_sight_chosen <= 0.0) return vec3(0.0);
-    vec3 counted = environment(g_sight_p, g_sight_d) +
-                   light_specular(g_sight_p, g_sight_d, g_sight_n, g_sight_facet, g_sight_k);
+#ifdef FIRE_FIRST_ORDER
+    // Fire moved each channel's lookup off the exit's direction; it stays in the cube's part,
+    // so the cube is taken again along the exit's own.
+    vec3 counted = environment(g_sight_p, g_sight_d) + g_sight_lights;
+#else
+    vec3 counted = g_sight_env + g_sight_lights;
+#endif
     vec3 n = u_frame_rotation * g_sight_n;
     vec3 o = u_frame_rotation * g_sight_p + u_frame_origin + n * u_ray_offset_mm;
     bool met;
