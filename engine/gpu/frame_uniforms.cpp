@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "gpu/ring_renderer.hpp"
+
 namespace gem::gpu {
 
 glm::mat4 view_projection(const Camera& camera, double scene_radius_mm) {
@@ -91,8 +93,19 @@ std::uint32_t shading_features(const StoneFrame& frame) {
         (sigma.x > 0.0 || sigma.y > 0.0 || sigma.z > 0.0)) {
         features |= kAbsorbing;
     }
+    // A piece's exits are followed under the physical shading only: the thesis' is no light
+    // transport to correct.
+    if (frame.piece_sight != nullptr && frame.shading.model == ShadingModel::physical) {
+        features |= kSeesPiece;
+    }
     return features | light_count_feature(frame.shading.lights) |
            specular_power_feature(frame.shading.h);
+}
+
+void set_piece_sight_uniforms(const Program& program, const StoneFrame& frame, int first_unit) {
+    if ((shading_features(frame) & kSeesPiece) == 0) return;
+    frame.piece_sight->set_piece_sight_uniforms(program, frame.shading, frame.still.index,
+                                                first_unit);
 }
 
 namespace {

@@ -70,7 +70,7 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm);
 
 // The shading.glsl features `frame` needs compiled in (program_variants.hpp: the thesis'
 // shading model, a cube at infinity, an absorbing body, the number of lights, a whole
-// specular exponent).
+// specular exponent, and its exits followed into its piece: stone_sight.glsl).
 std::uint32_t shading_features(const StoneFrame& frame);
 
 // u_light_position (w = 1: a point, 0: a direction) and u_light_colour of the first kMaxLights
@@ -81,6 +81,11 @@ void set_light_uniforms(const Program& program, const std::vector<Light>& lights
 // u_piece_light_position and u_piece_light_colour (metal.glsl): the lights in the piece's frame,
 // for the metal's shading and for rays that follow the piece.
 void set_piece_light_uniforms(const Program& program, const std::vector<Light>& lights);
+
+// Where shading_features(frame) follows the exits into the piece: what piece_path.glsl and
+// stone_sight.glsl read, their textures on RingRenderer::kPieceSightUnits units from
+// `first_unit`. Nothing otherwise.
+void set_piece_sight_uniforms(const Program& program, const StoneFrame& frame, int first_unit);
 
 // A sampler bound to a texture unit for as long as this lives (it overrides the filter of
 // whatever texture a later pass binds to the unit).

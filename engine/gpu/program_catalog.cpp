@@ -15,10 +15,8 @@ std::vector<std::string> stone_sources(const char* method) {
 }  // namespace
 
 std::vector<ProgramSpec> all_program_specs() {
-    constexpr std::uint32_t kTableFeatures =
-        kShadingFeatures | kFireFirstOrder | kTwoViews | kSeesPiece;
-    constexpr std::uint32_t kTraceFeatures =
-        kShadingFeatures | kFireFirstOrder | kFireExact | kSeesPiece;
+    constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
+    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -38,7 +36,7 @@ std::vector<ProgramSpec> all_program_specs() {
          {"stone.vert"},
          stone_sources("trace.frag"),
          {"NON_CONVEX"},
-         kShadingFeatures | kFireExact | kSeesPiece},
+         kShadingFeatures | kFireExact},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).

@@ -56,8 +56,9 @@ constexpr int specular_power_of(std::uint32_t features) {
     return static_cast<int>((features & kSpecularPowerBits) >> kSpecularPowerShift);
 }
 static_assert((kSeesPiece & kSpecularPowerBits) == 0 && kSeesPiece > kSpecularPowerBits);
-inline constexpr std::uint32_t kShadingFeatures =
-    kThesisShading | kCubeAtInfinity | kAbsorbing | kLightCountBits | kSpecularPowerBits;
+// What shading_features() (frame_uniforms.hpp) may ask of a stone method's program.
+inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfinity | kAbsorbing |
+                                                  kLightCountBits | kSpecularPowerBits | kSeesPiece;
 
 // The #defines of `features`, in bit order, then the light count (none for no lights), the
 // specular power (none for pow at run time) and SEES_PIECE.

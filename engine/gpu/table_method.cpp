@@ -225,12 +225,8 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     }
 
     const bool dispersion = database_->params().dispersion;
-    // As the trace's (trace_method.cpp): a piece's still frames follow the stored exits into it.
-    const bool sees_piece =
-        frame.piece_sight != nullptr && frame.shading.model == ShadingModel::physical;
     const std::uint32_t features = shading_features(frame) | (dispersion ? kFireFirstOrder : 0u) |
-                                   (v1 != nullptr ? kTwoViews : 0u) |
-                                   (sees_piece ? kSeesPiece : 0u);
+                                   (v1 != nullptr ? kTwoViews : 0u);
     const auto attach = [&](const Program& built) { stone_->attach(built); };
     auto chosen = programs_.get(features, attach);
     if (!chosen) return Error{chosen.error()};
@@ -277,10 +273,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         p.set("u_blend", static_cast<float>(blend));
         bind_view(*v1, second, 1, 7);
     }
-    if (sees_piece) {
-        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index,
-                                                    kPieceSightUnit);
-    }
+    set_piece_sight_uniforms(p, frame, kPieceSightUnit);
 
     stone_->draw_front_faces();
     stats.drawn = true;

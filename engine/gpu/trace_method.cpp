@@ -317,14 +317,9 @@ std::string TraceMethod::measurement() const {
 Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& trace,
                                TraceDispersion dispersion) {
     assert(frame.environment != nullptr);
-    // The piece's exits are followed under the physical shading only: the thesis' is no
-    // light transport to correct.
-    const bool sees_piece =
-        frame.piece_sight != nullptr && frame.shading.model == ShadingModel::physical;
     const std::uint32_t features =
         shading_features(frame) |
-        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr) |
-        (sees_piece ? kSeesPiece : 0u);
+        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -332,10 +327,7 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, kEnvironmentUnit);
     geometry_.bind(p, kStoneUnit);
-    if (sees_piece) {
-        frame.piece_sight->set_piece_sight_uniforms(p, frame.shading, frame.still.index,
-                                                    kPieceSightUnit);
-    }
+    set_piece_sight_uniforms(p, frame, kPieceSightUnit);
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));
     // A still frame may trace deeper than a moving one, never shallower.
