@@ -55,10 +55,11 @@ RenderSettings settings() {
 // fastest search, measured as each renderer is made, may differ between them on a loaded
 // machine (each exact to float rounding). `still_frames` > 0: the mean of that many frames of
 // a still view (their metal follows its reflected rays through the piece), unjittered.
-Image draw_on_gpu(const Piece* piece, const Stone* loose, double framing_mm,
-                  const CameraSettings& view = settings().camera,
-                  gpu::ExitSearch search = gpu::ExitSearch::measured, int still_frames = 0) {
-    const Environment environment = Environment::studio();
+// The trace of `piece` (or the `loose` stone) in the studio, which must outlive it, as
+// settings() shades it, with `fire`.
+Result<gpu::FrameRenderer> make_renderer(const Piece* piece, const Stone* loose,
+                                         const Environment& studio, gpu::ExitSearch search,
+                                         gpu::TraceDispersion fire = gpu::TraceDispersion::none) {
     const RenderSettings s = settings();
     gpu::FrameSetup setup;
     setup.method = "trace";
@@ -70,9 +71,17 @@ Image draw_on_gpu(const Piece* piece, const Stone* loose, double framing_mm,
     setup.shading = s.shading;
     setup.trace = s.trace;
     setup.trace_search = search;
-    setup.environment = &environment;
+    setup.trace_dispersion = fire;
+    setup.environment = &studio;
     setup.cube_face = 128;
-    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    return gpu::FrameRenderer::make(std::move(setup));
+}
+
+Image draw_on_gpu(const Piece* piece, const Stone* loose, double framing_mm,
+                  const CameraSettings& view = settings().camera,
+                  gpu::ExitSearch search = gpu::ExitSearch::measured, int still_frames = 0) {
+    const Environment environment = Environment::studio();
+    auto renderer = make_renderer(piece, loose, environment, search);
     EXPECT_TRUE(renderer.ok()) << renderer.error();
     if (!renderer) return {};
     auto target = gpu::RenderTarget::make(kSize, kSize);
@@ -241,15 +250,8 @@ TEST(GpuPiece, WhatAStonesExitsSeeInASpectralStillViewIsGrey) {
     const Environment environment = Environment::studio();
     RenderSettings s = settings();
     s.camera.zoom = 2.5;
-    gpu::FrameSetup setup;
-    setup.method = "trace";
-    setup.piece = &halo.value();
-    setup.shading = s.shading;
-    setup.trace = s.trace;
-    setup.trace_dispersion = gpu::TraceDispersion::spectral;
-    setup.environment = &environment;
-    setup.cube_face = 128;
-    auto renderer = gpu::FrameRenderer::make(std::move(setup));
+    auto renderer = make_renderer(&halo.value(), nullptr, environment, gpu::ExitSearch::measured,
+                                  gpu::TraceDispersion::spectral);
     ASSERT_TRUE(renderer) << renderer.error();
     auto camera = Camera::make(s.camera, halo.value().radius_mm(), kSize, kSize);
     ASSERT_TRUE(camera) << camera.error();
