@@ -27,7 +27,7 @@ struct StillFrame {
     // (TraceSettings::max_depth); 0: its own.
     int depth = 0;
     // Its number in the still view (0 its first), by which its stochastic samples differ
-    // (the metal's reflected rays, metal_sight.glsl); -1 while the view moves.
+    // (the rays through the piece, piece_path.glsl); -1 while the view moves.
     int index = -1;
 };
 

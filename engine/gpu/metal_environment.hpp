@@ -27,7 +27,8 @@ class MetalEnvironment {
 
     // The cube the metal reads along its reflected direction, at level 0.
     const EnvironmentCube& filtered() const { return filtered_ ? *filtered_ : *source_; }
-    // The environment itself, unfiltered (what one reflected ray sees: metal_sight.glsl).
+    // The environment itself, unfiltered (what one ray through the piece sees where it leaves:
+    // piece_path.glsl).
     const EnvironmentCube& source() const { return *source_; }
     // RG16F, n·v across, roughness down: (scale, bias) of the environment BRDF.
     GLuint brdf_table() const { return brdf_table_.get(); }

@@ -24,7 +24,7 @@
 
 namespace gem {
 
-// The deepest tree metal_sight.glsl's fixed stack walks (its kBvhStack holds two nodes a level).
+// The deepest tree piece_path.glsl's fixed stack walks (its kBvhStack holds two nodes a level).
 inline constexpr int kSightMeshDepth = 30;
 
 struct PlacedStone {
