@@ -70,18 +70,75 @@ void BloomPass::level_regions(const PixelRect& region, LevelRegions& down,
     }
 }
 
-PixelRect BloomPass::reach(const PixelRect& content) const {
-    LevelRegions down, sum;
-    level_regions(content, down, sum);
-    // shaders/finish.frag samples the top level at the pixel's centre, bilinear.
+PixelRect BloomPass::picture_reach(const LevelRegions& down, const PixelRect& from) const {
+    // Up (shaders/bloom_up.frag), from the cut level to the top: each level adds its own
+    // downsample; then shaders/finish.frag samples the top level at the pixel's centre,
+    // bilinear.
+    PixelRect level = from;
+    for (std::size_t i = cut_level(); i-- > 0;) {
+        const glm::dvec2 scale = glm::dvec2(size_of(i + 1)) / glm::dvec2(size_of(i));
+        level = united(down[i], affected_by(level, scale, -1.0, 1.0, size_of(i)));
+    }
     const glm::dvec2 scale = glm::dvec2(size_of(0)) / glm::dvec2(width_, height_);
-    return united(content, affected_by(sum[0], scale, 0.0, 0.0, {width_, height_}));
+    return affected_by(level, scale, 0.0, 0.0, {width_, height_});
 }
 
-Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& content) {
+std::optional<PixelRect> BloomPass::shown_texels(const PixelRect& region, const GlareCut& cut) {
+    if (region.empty()) return PixelRect{};
+    const std::size_t k = cut_level();
+    read_back_.resize(static_cast<std::size_t>(region.area()) * 4);
+    glBindFramebuffer(GL_READ_FRAMEBUFFER, k + 1 == levels_.size()
+                                               ? levels_[k].down_framebuffer.get()
+                                               : levels_[k].sum_framebuffer.get());
+    while (glGetError() != GL_NO_ERROR) {
+    }
+    glReadPixels(region.x0, region.y0, region.width(), region.height(), GL_RGBA, GL_FLOAT,
+                 read_back_.data());
+    if (glGetError() != GL_NO_ERROR) return std::nullopt;
+    // The sum holds levels() - k blurs, each the background's own colour where the content
+    // does not reach; the finish mixes their sum in at share / levels().
+    const glm::vec3 flat = cut.background * static_cast<float>(levels_.size() - k);
+    const float weight = static_cast<float>(cut.share / static_cast<double>(levels_.size()));
+    const float unseen = static_cast<float>(cut.unseen);
+    PixelRect shown{region.x1, region.y1, region.x0, region.y0};
+    for (int y = 0; y < region.height(); ++y) {
+        const float* row = read_back_.data() + static_cast<std::size_t>(y) * region.width() * 4;
+        for (int x = 0; x < region.width(); ++x) {
+            const glm::vec3 change =
+                glm::abs(glm::vec3(row[x * 4], row[x * 4 + 1], row[x * 4 + 2]) - flat) * weight;
+            if (std::max({change.x, change.y, change.z}) < unseen) continue;
+            shown.x0 = std::min(shown.x0, region.x0 + x);
+            shown.x1 = std::max(shown.x1, region.x0 + x + 1);
+            shown.y0 = std::min(shown.y0, region.y0 + y);
+            shown.y1 = std::max(shown.y1, region.y0 + y + 1);
+        }
+    }
+    return shown.empty() ? PixelRect{} : shown;
+}
+
+void BloomPass::draw_sum(std::size_t i, const PixelRect& region) {
+    const Level& smaller = levels_[i + 1];
+    const Level& level = levels_[i];
+    glBindFramebuffer(GL_FRAMEBUFFER, level.sum_framebuffer.get());
+    glViewport(0, 0, level.width, level.height);
+    glScissor(region.x0, region.y0, region.width(), region.height());
+    glActiveTexture(GL_TEXTURE1);
+    glBindTexture(GL_TEXTURE_2D, level.down.get());
+    glActiveTexture(GL_TEXTURE0);
+    glBindTexture(GL_TEXTURE_2D, sum_texture(i + 1));
+    up_.set("u_source_texel", glm::vec2(1.0f / static_cast<float>(smaller.width),
+                                        1.0f / static_cast<float>(smaller.height)));
+    up_.set("u_target_texel", glm::vec2(1.0f / static_cast<float>(level.width),
+                                        1.0f / static_cast<float>(level.height)));
+    glDrawArrays(GL_TRIANGLES, 0, 3);
+}
+
+Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& content,
+                                 const std::optional<GlareCut>& cut) {
     // Without a content (or a last one) the region is the whole picture: every level whole.
+    const PixelRect whole = PixelRect::whole(width_, height_);
     LevelRegions down, sum;
-    level_regions(damage_.rewrite(content, PixelRect::whole(width_, height_)), down, sum);
+    level_regions(damage_.rewrite(content, whole), down, sum);
     const auto scissor = [](const PixelRect& r) { glScissor(r.x0, r.y0, r.width(), r.height()); };
     glEnable(GL_SCISSOR_TEST);
     glDisable(GL_DEPTH_TEST);
@@ -107,26 +164,49 @@ Result<bool> BloomPass::run(GLuint scene, const std::optional<PixelRect>& conten
                                  1.0f / static_cast<float>(level.height));
     }
     glBindSampler(0, 0);
+    // The smaller levels' sums where the content's glare reaches them, now or the last time:
+    // elsewhere they hold the background's (the downsamples too, at every level).
     up_.use();
     up_.set("u_source", 0);
     up_.set("u_own", 1);
-    for (std::size_t i = levels_.size() - 1; i-- > 0;) {
-        const Level& smaller = levels_[i + 1];
-        const Level& level = levels_[i];
-        glBindFramebuffer(GL_FRAMEBUFFER, level.sum_framebuffer.get());
-        glViewport(0, 0, level.width, level.height);
-        scissor(sum[i]);
-        glActiveTexture(GL_TEXTURE1);
-        glBindTexture(GL_TEXTURE_2D, level.down.get());
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_2D, sum_texture(i + 1));
-        up_.set("u_source_texel", glm::vec2(1.0f / static_cast<float>(smaller.width),
-                                            1.0f / static_cast<float>(smaller.height)));
-        up_.set("u_target_texel", glm::vec2(1.0f / static_cast<float>(level.width),
-                                            1.0f / static_cast<float>(level.height)));
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+    const std::size_t k = cut_level();
+    for (std::size_t i = levels_.size() - 1; i-- > k;) draw_sum(i, sum[i]);
+    auto ok = gl_check("glare pass");
+    if (!ok) return Error{ok.error()};
+    if (!content) return whole;
+    LevelRegions now_down, now_sum;
+    level_regions(*content, now_down, now_sum);
+    PixelRect from = now_sum[k];
+    if (cut && !cut_unavailable_) {
+        const std::optional<PixelRect> shown = shown_texels(now_sum[k], *cut);
+        cut_unavailable_ = !shown;
+        if (shown) from = *shown;
     }
-    return gl_check("glare pass");
+    return united(*content, picture_reach(now_down, from));
+}
+
+Result<bool> BloomPass::spread(const PixelRect& region) {
+    // The wider levels' sums are this frame's only where the picture's `region` reads them,
+    // through the finish's bilinear tap and each step up's ±1 texels: they are drawn there and
+    // nowhere else, so what they hold elsewhere (an earlier frame's glare) is never read.
+    const std::size_t k = cut_level();
+    if (k == 0 || region.empty()) return true;
+    LevelRegions needed;
+    needed[0] =
+        read_by(region, glm::dvec2(size_of(0)) / glm::dvec2(width_, height_), 0.0, 0.0, size_of(0));
+    for (std::size_t i = 1; i < k; ++i) {
+        needed[i] = read_by(needed[i - 1], glm::dvec2(size_of(i)) / glm::dvec2(size_of(i - 1)),
+                            -1.0, 1.0, size_of(i));
+    }
+    glEnable(GL_SCISSOR_TEST);
+    glDisable(GL_DEPTH_TEST);
+    glDisable(GL_BLEND);
+    glBindVertexArray(empty_.get());
+    up_.use();
+    up_.set("u_source", 0);
+    up_.set("u_own", 1);
+    for (std::size_t i = k; i-- > 0;) draw_sum(i, needed[i]);
+    return gl_check("glare: spread");
 }
 
 }  // namespace gem::gpu

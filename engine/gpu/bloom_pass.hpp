@@ -8,6 +8,13 @@
 // level's sum, upsampled: shaders/bloom_up.frag), so that where a piece on a flat background
 // changes only part of the picture, a level's downsample is redrawn only where the piece
 // reaches it, and its sum only where the sums below reach it (SurfaceDamage, pixel_rect.hpp).
+//
+// The glare of a piece on a flat background fades over its filters' reach (a tenth of the
+// picture's height each side at 1080p), far past where it still shows: at the kiosk's start
+// view, 8-bit codes stop changing a few pixels from the ring. So the sum of a level of 8-pixel
+// texels is read back, and the picture finished only where that sum, mixed in, changes the
+// picture by as much as the display shows (GlareCut); the wider levels' sums are spread only
+// where those pixels read them (spread()). Beyond, the glare moves no code by half a step.
 
 #include <array>
 #include <optional>
@@ -20,6 +27,15 @@
 
 namespace gem::gpu {
 
+// Where the glare is cut: around a piece on a flat `background`, beyond the pixels where the
+// glare, mixed in at `share`, moves the picture's radiance by `unseen` (render/tone_map.hpp:
+// unseen_change()) or more in some channel: there it moves no 8-bit code by half a step.
+struct GlareCut {
+    glm::vec3 background{0.0f};
+    double share = 0.0;
+    double unseen = 0.0;
+};
+
 class BloomPass {
   public:
     // For a picture of width × height; the pyramid stops before a side would drop below 8 px.
@@ -27,20 +43,26 @@ class BloomPass {
     static Result<BloomPass> make(int width, int height);
 
     // Filters `scene` (an RGBA16F texture of the picture's size, or RGBA32F where the GL filters
-    // floats: OES_texture_float_linear) into the pyramid. `content`:
-    // where the scene differs from one flat colour, which it was everywhere else the last time
-    // too (nullopt: anywhere); each level is then rewritten only where this content or the
-    // last run's reaches it. Leaves the scissor test on.
-    Result<bool> run(GLuint scene, const std::optional<PixelRect>& content = std::nullopt);
-    // The picture's pixels whose glare reads anything from the scene's pixels in `content`,
-    // those included: where the glare of a piece on a flat background differs from the
-    // background's own.
-    PixelRect reach(const PixelRect& content) const;
+    // floats: OES_texture_float_linear) into the pyramid's levels from the cut level on (the
+    // smaller ones; spread() fills the wider ones' sums). `content`: where the scene differs
+    // from one flat colour, which it was everywhere else the last time too (nullopt:
+    // anywhere); each level is then rewritten only where this content or the last run's
+    // reaches it. Gives the picture's pixels whose glare may differ from the background's own:
+    // everything the content's glare reaches, or with a cut only where the glare changes the
+    // picture by more than the display shows (GlareCut), read back from the cut level (so the
+    // GPU's queue drains there). Leaves the scissor test on.
+    Result<PixelRect> run(GLuint scene, const std::optional<PixelRect>& content = std::nullopt,
+                          const std::optional<GlareCut>& cut = std::nullopt);
+    // Fills the wider levels' sums wherever the picture's pixels in `region` read them, after
+    // run(): the glare texture then holds this frame's glare there, and only there.
+    Result<bool> spread(const PixelRect& region);
     // The last run's content is unknown to the next (the pyramid was filled from another
     // background): it is rewritten whole.
     void forget() { damage_.forget(); }
-    // The top level's sum.
+    // The top level's sum (where spread() filled it).
     GLuint glare_texture() const;
+    // The glare could not be read back to be cut (the GL reads no float texels): it is whole.
+    bool cut_unavailable() const { return cut_unavailable_; }
     int levels() const { return static_cast<int>(levels_.size()); }
 
   private:
@@ -61,6 +83,18 @@ class BloomPass {
     // Each level's texels that read anything of the picture's `region`: through the filters
     // down (`down`), and then also back up from the smaller levels (`sum`).
     void level_regions(const PixelRect& region, LevelRegions& down, LevelRegions& sum) const;
+    // The level whose sum is read back to cut the glare, and below which (the wider levels)
+    // the sums are spread only where the picture reads them: its texels are 8 pixels, or the
+    // smallest level's where there are fewer levels.
+    std::size_t cut_level() const { return std::min<std::size_t>(2, levels_.size() - 1); }
+    // The picture's pixels whose glare reads `from` (texels of the cut level's sum) or, through
+    // the wider levels, their downsamples in `down`.
+    PixelRect picture_reach(const LevelRegions& down, const PixelRect& from) const;
+    // The texels of the cut level's sum in `region` whose glare the display shows, as one
+    // rectangle (empty: none); nullopt where they cannot be read.
+    std::optional<PixelRect> shown_texels(const PixelRect& region, const GlareCut& cut);
+    // Level i's sum, down + the next level's sum upsampled, over `region`.
+    void draw_sum(std::size_t i, const PixelRect& region);
     GLuint sum_texture(std::size_t level) const {
         return level + 1 == levels_.size() ? levels_[level].down.get() : levels_[level].sum.get();
     }
@@ -76,6 +110,8 @@ class BloomPass {
     VertexArray empty_;
     std::vector<Level> levels_;
     SurfaceDamage damage_;
+    std::vector<float> read_back_;  // the cut level's texels, RGBA
+    bool cut_unavailable_ = false;
     int width_ = 0;
     int height_ = 0;
 };

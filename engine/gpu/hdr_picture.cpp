@@ -274,21 +274,31 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         return true;
     }
     const bool glare = glare_ && options_.glare > 0.0;
+    // What the finish rewrites: around the piece, its glare's reach (cut where the display
+    // shows none of it) included, and what it rewrote the last time.
+    PixelRect shown = content ? *content : whole;
     if (glare) {
-        auto ran = glare_->run(scene, content);
+        auto ran = glare_->run(scene, content, glare_cut());
         if (!ran) {
             glDisable(GL_SCISSOR_TEST);
-            return ran;
+            return Error{ran.error()};
+        }
+        shown = ran.value();
+    }
+    if (picture.framebuffer() != last_target_) target_damage_.forget();
+    last_target_ = picture.framebuffer();
+    target_region_ =
+        target_damage_.rewrite(content ? std::optional<PixelRect>(shown) : std::nullopt, whole);
+    if (glare) {
+        auto spread = glare_->spread(target_region_);
+        if (!spread) {
+            glDisable(GL_SCISSOR_TEST);
+            return spread;
         }
     }
     lap(times ? &times->glare_ms : nullptr);
 
     picture.bind();
-    if (picture.framebuffer() != last_target_) target_damage_.forget();
-    last_target_ = picture.framebuffer();
-    std::optional<PixelRect> shown = content;
-    if (content && glare) shown = glare_->reach(*content);
-    target_region_ = target_damage_.rewrite(shown, whole);
     scissor(target_region_);
     glDisable(GL_DEPTH_TEST);
     glDisable(GL_BLEND);
@@ -309,6 +319,19 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     glDisable(GL_SCISSOR_TEST);
     lap(times ? &times->tone_ms : nullptr);
     return gl_check("picture: finish");
+}
+
+std::optional<GlareCut> HdrPicture::glare_cut() {
+    if (!cover_ || !options_.glare_cut) return std::nullopt;
+    const glm::dvec3 background(cover_->background);
+    // The mixed picture is the background itself where the glare adds nothing.
+    if (!unseen_ || unseen_->background != background ||
+        unseen_->display.curve != options_.display.curve ||
+        unseen_->display.exposure_ev != options_.display.exposure_ev) {
+        unseen_ =
+            UnseenChange{background, options_.display, unseen_change(background, options_.display)};
+    }
+    return GlareCut{cover_->background, options_.glare, unseen_->change};
 }
 
 std::string HdrPicture::describe() const {
@@ -335,10 +358,14 @@ std::string HdrPicture::describe() const {
         accumulate_ && options_.still_seconds > 0.0 ? "up to " : "",
         accumulate_ ? options_.still_frames : 1, mean.c_str(),
         spectrum_ ? ", each its own wavelengths" : "", depth.c_str(),
-        glare_ && options_.glare > 0.0 ? ("glare " + std::to_string(options_.glare).substr(0, 4) +
-                                          " over " + std::to_string(glare_->levels()) + " levels")
-                                             .c_str()
-                                       : "no glare",
+        glare_ && options_.glare > 0.0
+            ? ("glare " + std::to_string(options_.glare).substr(0, 4) + " over " +
+               std::to_string(glare_->levels()) + " levels" +
+               (!options_.glare_cut         ? ", uncut"
+                : glare_->cut_unavailable() ? ", uncut (the GL reads no float texels back)"
+                                            : ", cut where unseen"))
+                  .c_str()
+            : "no glare",
         to_string(options_.display.curve), options_.display.exposure_ev);
     return line;
 }

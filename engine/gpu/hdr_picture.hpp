@@ -55,7 +55,10 @@ struct PictureOptions {
     int samples = 4;           // MSAA samples asked for; fewer where the GPU has fewer
     DisplayTransform display;  // exposure and tone curve
     double glare = 0.04;       // share of the picture spread into glare; 0: none
-    int still_frames = 16;     // frames averaged while the view is still; 1: none
+    // Around a piece on a flat background, the glare ends where it changes no pixel of the
+    // 8-bit picture by half a step (GlareCut); false: wherever its filters reach.
+    bool glare_cut = true;
+    int still_frames = 16;  // frames averaged while the view is still; 1: none
     // Spectral fire: each still frame traces its own wavelengths, one per channel
     // (still_frame()); needs still_frames > 1.
     bool spectral = false;
@@ -145,6 +148,8 @@ class HdrPicture {
     std::optional<PixelRect> band() const;
     // Every surface rewritten whole at its next frame.
     void forget_all();
+    // Where this frame's glare may be cut (nullopt: no flat background, or no cut asked for).
+    std::optional<GlareCut> glare_cut();
 
     PictureOptions options_;
     int width_ = 0;
@@ -181,6 +186,13 @@ class HdrPicture {
     SurfaceDamage target_damage_;
     GLuint last_target_ = 0;
     PixelRect target_region_;
+    // unseen_change() of the background under the display transform it was found for.
+    struct UnseenChange {
+        glm::dvec3 background;
+        DisplayTransform display;
+        double change = 0.0;
+    };
+    std::optional<UnseenChange> unseen_;
 };
 
 }  // namespace gem::gpu

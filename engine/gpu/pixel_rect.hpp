@@ -68,6 +68,28 @@ inline PixelRect affected_by(const PixelRect& input, glm::dvec2 scale, double re
     return out.empty() ? PixelRect{} : out;
 }
 
+// The other way round: the input texels [lo, hi) that output texels [a, b) read, for the same
+// pass (output texel j reads input texels floor(x_lo − 0.5) to floor(x_hi + 0.5)), one texel
+// more on each side as above.
+inline void read_side(int a, int b, double scale, double reach_lo, double reach_hi, int size,
+                      int& lo, int& hi) {
+    lo = static_cast<int>(std::floor((a + 0.5) * scale + reach_lo - 0.5)) - 1;
+    hi = static_cast<int>(std::floor((b - 0.5) * scale + reach_hi + 0.5)) + 2;
+    lo = std::clamp(lo, 0, size);
+    hi = std::clamp(hi, 0, size);
+}
+
+// The texels of an input of `size` that the output texels in `output` read, for a pass as
+// affected_by()'s: where the input must hold this frame's values before the pass runs there.
+inline PixelRect read_by(const PixelRect& output, glm::dvec2 scale, double reach_lo,
+                         double reach_hi, glm::ivec2 size) {
+    if (output.empty()) return {};
+    PixelRect in;
+    read_side(output.x0, output.x1, scale.x, reach_lo, reach_hi, size.x, in.x0, in.x1);
+    read_side(output.y0, output.y1, scale.y, reach_lo, reach_hi, size.y, in.y0, in.y1);
+    return in.empty() ? PixelRect{} : in;
+}
+
 // What a surface holds apart from the flat background it was cleared to, so that a frame
 // rewrites only the part that changes: the content it draws now and the content it drew last
 // (which must go). A surface whose last content is unknown (never drawn, drawn over by

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "optics/colour.hpp"
+
 namespace gem {
 
 namespace {
@@ -45,6 +47,32 @@ Image to_display(const Image& scene_linear, const DisplayTransform& transform) {
         p = glm::vec4(glm::vec3(c), p.w);
     }
     return out;
+}
+
+double unseen_change(const glm::dvec3& scene_linear, const DisplayTransform& transform) {
+    const auto codes = [&](const glm::dvec3& radiance) {
+        const glm::dvec3 shown = to_display(radiance, transform);
+        return 255.0 * glm::dvec3(srgb_encode(shown.x), srgb_encode(shown.y), srgb_encode(shown.z));
+    };
+    const glm::dvec3 at = codes(scene_linear);
+    const auto unseen = [&](double t) {
+        for (int i = 0; i < 27; ++i) {
+            const glm::dvec3 step(i % 3 - 1, i / 3 % 3 - 1, i / 9 - 1);
+            const glm::dvec3 moved = glm::abs(codes(scene_linear + t * step) - at);
+            if (std::max({moved.x, moved.y, moved.z}) >= 0.5) return false;
+        }
+        return true;
+    };
+    double lo = 0.0, hi = 1.0;
+    while (unseen(hi) && hi < 1e6) {
+        lo = hi;
+        hi *= 2.0;
+    }
+    for (int i = 0; i < 48; ++i) {
+        const double mid = 0.5 * (lo + hi);
+        (unseen(mid) ? lo : hi) = mid;
+    }
+    return 0.75 * lo;
 }
 
 const char* to_string(ToneCurve curve) {

@@ -32,6 +32,13 @@ glm::dvec3 to_display(const glm::dvec3& scene_linear, const DisplayTransform& tr
 // Every pixel's colour; alpha is kept.
 Image to_display(const Image& scene_linear, const DisplayTransform& transform);
 
+// The largest change of radiance, up to `t` in every channel at once and either way, that moves
+// no channel of `scene_linear`'s 8-bit sRGB output by half a code or more: what the display
+// cannot show about that colour (the glare is cut where it adds less, hdr_picture.hpp). Found
+// by bisection over the changes of -t, 0 and +t in each channel, with a quarter to spare for
+// the curve between those points.
+double unseen_change(const glm::dvec3& scene_linear, const DisplayTransform& transform);
+
 const char* to_string(ToneCurve curve);
 std::optional<ToneCurve> tone_curve_named(std::string_view name);  // "clip", "neutral"
 

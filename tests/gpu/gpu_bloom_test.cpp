@@ -233,6 +233,7 @@ double glare_energy(int x, int y, float value) {
     EXPECT_TRUE(glare) << glare.error();
     if (!glare) return 0.0;
     EXPECT_TRUE(glare.value().run(scene.get()));
+    EXPECT_TRUE(glare.value().spread(gpu::PixelRect::whole(kSize, kSize)));
     glDisable(GL_SCISSOR_TEST);
     const int w = kSize / 2, h = kSize / 2;  // the top level
     const gpu::Framebuffer read = gpu::make_framebuffer_with(glare.value().glare_texture());

@@ -61,6 +61,41 @@ TEST(GpuPixelRect, AnOutputTexelThatReadsTheRegionIsInItsAffectedRectangle) {
     }
 }
 
+TEST(GpuPixelRect, EveryInputTexelAnOutputRegionReadsIsInItsReadRectangle) {
+    std::mt19937 random(11);
+    struct Pass {
+        double scale, lo, hi;
+        int input, output;
+    };
+    // The glare's passes up (±1 texels of a level half the size) and the finish.
+    const Pass passes[] = {{60.0 / 120.0, -1.0, 1.0, 60, 120},
+                           {33.0 / 67.0, -1.0, 1.0, 33, 67},
+                           {67.0 / 135.0, -1.0, 1.0, 67, 135},
+                           {960.0 / 1920.0, 0.0, 0.0, 960, 1920},
+                           {2.0, -2.0, 2.0, 135, 67}};
+    for (const Pass& p : passes) {
+        for (int trial = 0; trial < 40; ++trial) {
+            const int a = std::uniform_int_distribution<int>(0, p.output - 1)(random);
+            const int b = std::uniform_int_distribution<int>(a + 1, p.output)(random);
+            const PixelRect in = read_by({a, 0, b, 1}, {p.scale, 1.0}, p.lo, p.hi, {p.input, 1});
+            int first = -1, last = -1;
+            for (int t = 0; t < p.input; ++t) {
+                bool read = false;
+                for (int j = a; j < b && !read; ++j) read = reads(j, t, t + 1, p.scale, p.lo, p.hi);
+                if (!read) continue;
+                if (first < 0) first = t;
+                last = t;
+                EXPECT_TRUE(t >= in.x0 && t < in.x1)
+                    << "texel " << t << " is read by [" << a << ", " << b << ") at scale "
+                    << p.scale << " but lies outside [" << in.x0 << ", " << in.x1 << ")";
+            }
+            ASSERT_GE(first, 0);
+            EXPECT_LE(first - in.x0, 2);
+            EXPECT_LE(in.x1 - 1 - last, 2);
+        }
+    }
+}
+
 TEST(GpuPixelRect, UnitedClampedAndIntersectedKeepThePixelsTheyShould) {
     const PixelRect a{10, 20, 30, 40}, b{25, 5, 60, 22};
     EXPECT_EQ(united(a, b), (PixelRect{10, 5, 60, 40}));

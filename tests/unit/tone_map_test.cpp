@@ -3,6 +3,7 @@
 // order kept), and the exposure.
 #include <algorithm>
 #include <cmath>
+#include <random>
 
 #include <gtest/gtest.h>
 
@@ -96,6 +97,58 @@ TEST(ToneMap, ExposureScalesTheInputByPowersOfTwo) {
     EXPECT_EQ(to_display(c, {ToneCurve::neutral, 1.0}), to_display(2.0 * c, kNeutral));
     EXPECT_EQ(to_display(c, {ToneCurve::clip, -2.0}), to_display(0.25 * c, kClip));
     EXPECT_EQ(to_display(glm::dvec3(-1.0, 2.0, 0.5), kClip), glm::dvec3(0.0, 1.0, 0.5));
+}
+
+// The IEC 61966-2-1 transfer function, written out here apart from optics/colour.cpp.
+double srgb(double v) {
+    return v <= 0.0031308 ? 12.92 * v : 1.055 * std::pow(v, 1.0 / 2.4) - 0.055;
+}
+double linear(double e) {
+    return e <= 0.04045 ? e / 12.92 : std::pow((e + 0.055) / 1.055, 2.4);
+}
+
+TEST(ToneMap, AnUnseenChangeIsHalfACodeOnTheSteeperSideForTheClip) {
+    // Grey: each channel alone, through the clip curve at 0 EV, moves half a code at a change
+    // of its linear value that the inverse transfer gives; the darker side is the steeper.
+    for (const double v : {0.002, 0.03, 0.2, 0.7}) {
+        const double code = 255.0 * srgb(v);
+        const double down = v - linear((code - 0.5) / 255.0);
+        const double up = linear((code + 0.5) / 255.0) - v;
+        const double expected = 0.75 * std::min(down, up);
+        EXPECT_NEAR(unseen_change(glm::dvec3(v), kClip), expected, 1e-3 * expected) << v;
+    }
+}
+
+TEST(ToneMap, AnUnseenChangeMovesNoCodeByHalfAndTwiceItDoes) {
+    std::mt19937 random(5);
+    std::uniform_real_distribution<double> unit(-1.0, 1.0);
+    const auto codes = [](const glm::dvec3& c, const DisplayTransform& t) {
+        const glm::dvec3 d = to_display(c, t);
+        return 255.0 * glm::dvec3(srgb(d.x), srgb(d.y), srgb(d.z));
+    };
+    for (const DisplayTransform& t : {kNeutral, DisplayTransform{ToneCurve::neutral, 1.5}}) {
+        for (const glm::dvec3 c : {glm::dvec3(0.02, 0.03, 0.05), glm::dvec3(0.3, 0.2, 0.1),
+                                   glm::dvec3(0.9, 0.95, 1.0), glm::dvec3(3.0, 2.0, 1.0)}) {
+            const double change = unseen_change(c, t);
+            ASSERT_GT(change, 0.0);
+            const glm::dvec3 at = codes(c, t);
+            double most = 0.0;
+            for (int i = 0; i < 4000; ++i) {
+                const glm::dvec3 step(unit(random), unit(random), unit(random));
+                const glm::dvec3 moved = glm::abs(codes(c + change * step, t) - at);
+                most = std::max({most, moved.x, moved.y, moved.z});
+            }
+            EXPECT_LT(most, 0.5) << c.x << " " << c.y << " " << c.z;
+            // Not needlessly small: some change of at most three times as much is seen.
+            double seen = 0.0;
+            for (int i = 0; i < 4000; ++i) {
+                const glm::dvec3 step(unit(random), unit(random), unit(random));
+                const glm::dvec3 moved = glm::abs(codes(c + 3.0 * change * step, t) - at);
+                seen = std::max({seen, moved.x, moved.y, moved.z});
+            }
+            EXPECT_GE(seen, 0.5) << c.x << " " << c.y << " " << c.z;
+        }
+    }
 }
 
 TEST(ToneMap, NamesRoundTrip) {
