@@ -103,9 +103,11 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
             gl_has_extension("GL_EXT_color_buffer_float") &&
             gl_has_extension("GL_EXT_float_blend") &&
             (options.glare <= 0.0 || gl_has_extension("GL_OES_texture_float_linear"));
-        p.mean_ = make_texture_2d(p.mean_high_precision_ ? GL_RGBA32F : GL_RGBA16F, width, height,
-                                  GL_NEAREST);
-        p.mean_framebuffer_ = make_framebuffer_with(p.mean_.get());
+        // Checked here on one texel; the picture-sized mean is made at the first still frame:
+        // on llvmpipe a new texture's pages are filled as it is made (0.13 s for 1080p in
+        // RGBA32F), time the first frame on screen need not wait for.
+        const Texture probe = make_texture_2d(p.mean_format(), 1, 1, GL_NEAREST);
+        const Framebuffer probe_framebuffer = make_framebuffer_with(probe.get());
         if (!complete()) return Error{"picture: the still view's mean cannot be rendered"};
         if (options.spectral) {
             p.spectrum_.emplace(options.still_frames);
@@ -246,6 +248,15 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     GLuint scene = resolved_.get();
     if (accumulating()) {
         // The running mean: the k-th frame (from 0) has weight 1 / (k + 1).
+        if (!mean_framebuffer_) {
+            mean_ = make_texture_2d(mean_format(), width_, height_, GL_NEAREST);
+            mean_framebuffer_ = make_framebuffer_with(mean_.get());
+            if (!complete()) {
+                glDisable(GL_SCISSOR_TEST);
+                return Error{"picture: the still view's mean cannot be rendered"};
+            }
+            mean_damage_.forget();
+        }
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
         // A band adds its rows only: each row has then had each frame of the view once.

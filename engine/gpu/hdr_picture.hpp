@@ -167,8 +167,9 @@ class HdrPicture {
     // kHalfFloatMeanFrames frames where the GPU can blend floats (and filter them, for the
     // glare).
     static constexpr int kHalfFloatMeanFrames = 64;
-    Texture mean_;
+    Texture mean_;  // made at the first still frame
     bool mean_high_precision_ = false;
+    GLenum mean_format() const { return mean_high_precision_ ? GL_RGBA32F : GL_RGBA16F; }
     Framebuffer mean_framebuffer_;
     StillSchedule schedule_;  // this frame's place in the still view's mean, and its depth
     int band_ = 0;            // the band of its still frame this frame draws

@@ -79,13 +79,24 @@ Result<bool> KioskSession::configure() {
 
     selection_ = std::make_unique<SceneSelection>(config_.backgrounds, config_.lightings);
     const CatalogueOptions catalogue = catalogue_setup(config_, resolved, kept_in);
-    auto startup = load_startup_catalogue(catalogue);
+    // Its first stone only: the rest is validated while that one is shown.
+    auto startup = load_startup_catalogue(catalogue, Entries::first);
     if (startup) {
-        log_info("catalogue '" + startup.value().name + "' with " +
-                 std::to_string(startup.value().stones.size()) + " stones from " +
-                 startup.value().directory.string());
-        log_catalogue_lines(startup.value());
-        selection_->set_catalogue(startup.value());
+        const Catalogue& c = startup.value();
+        log_info("catalogue '" + c.name + "' with " +
+                 std::to_string(c.stones.size() + c.unchecked) + " stones from " +
+                 c.directory.string() +
+                 (c.unchecked > 0 ? "; the first shown, the rest checked while it is" : ""));
+        log_catalogue_lines(c);
+        selection_->set_catalogue(c);
+        if (c.unchecked > 0) {
+            auto completion = CatalogueCompletion::start(catalogue);
+            if (completion) {
+                completion_ = std::move(completion).value();
+            } else {
+                log_error("catalogue: only its first stone is shown (" + completion.error() + ")");
+            }
+        }
         catalogue_ = std::move(startup).value();
     } else {
         // The kiosk still runs: it shows its background and takes the first valid catalogue
@@ -194,6 +205,7 @@ std::vector<int> KioskSession::poll_fds() const {
     if (!display_ && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
     if (input_) fds.push_back(input_->fd());
     if (watcher_) fds.push_back(watcher_->event_fd());
+    if (completion_) fds.push_back(completion_->event_fd());
     if (design_tables_ && design_tables_->fd() >= 0) fds.push_back(design_tables_->fd());
     return fds;
 }
@@ -237,6 +249,12 @@ void KioskSession::dispatch(double now_s) {
         last_input_s_ = t;
         gestures_->on_event(event);
     }
+    if (completion_) {
+        if (auto whole = completion_->take()) {
+            completion_.reset();
+            complete_catalogue(std::move(*whole), now_s);
+        }
+    }
     if (watcher_) {
         if (auto incoming = watcher_->take_switch()) switch_catalogue(std::move(*incoming), now_s);
     }
@@ -247,7 +265,37 @@ void KioskSession::dispatch(double now_s) {
     }
 }
 
+void KioskSession::complete_catalogue(Result<Catalogue> whole, double now_s) {
+    if (!whole) {
+        // Neither the installed copy nor the shipped catalogue validates whole: what is on
+        // screen was checked, and nothing more is taken from them.
+        log_error(whole.error() + "; only the stone on screen, checked, is shown");
+        return;
+    }
+    if (!catalogue_ || whole.value().directory != catalogue_->directory) {
+        switch_catalogue(std::move(whole).value(), now_s);  // the copy failed: the default
+        return;
+    }
+    // The same catalogue: what validation said beyond the first stone, and the other stones
+    // join the one on screen, whose scene stays.
+    const Catalogue& before = *catalogue_;
+    Catalogue& c = whole.value();
+    for (std::size_t i = before.left_out.size(); i < c.left_out.size(); ++i) {
+        log_error(c.left_out[i]);
+    }
+    for (std::size_t i = before.notes.size(); i < c.notes.size(); ++i) log_info(c.notes[i]);
+    for (std::size_t i = before.warnings.size(); i < c.warnings.size(); ++i) {
+        log_warning(c.warnings[i]);
+    }
+    log_info("catalogue '" + c.name + "': all " + std::to_string(c.stones.size()) +
+             " stones checked" +
+             (c.left_out.empty() ? "" : " (" + std::to_string(c.left_out.size()) + " left out)"));
+    if (!selection_->complete_catalogue(c)) scene_stale_ = true;
+    catalogue_ = std::move(whole).value();
+}
+
 void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
+    completion_.reset();  // a delivery outranks what the startup catalogue would have become
     log_notice("showing catalogue '" + catalogue.name + "' (" +
                std::to_string(catalogue.stones.size()) + " stones" +
                (catalogue.signed_by.empty() ? "" : ", signed by key " + catalogue.signed_by) +
@@ -354,6 +402,12 @@ void KioskSession::choose_render_method() {
         const MethodCandidate best = method_ladder(0, true).front();
         render_ = apply_candidate(render_, best);
         log_info("render.method auto: no frame rate to hold; using " + best.name);
+        return;
+    }
+    // The probe builds its own picture and scenes (a second of llvmpipe's time at 1080p): the
+    // first frame is shown with the table before it starts.
+    if (!first_frame_shown_) {
+        probe_after_first_frame_ = true;
         return;
     }
     // Marked before probing: a probe that fails is not tried again once frames are on screen.
@@ -568,6 +622,10 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
                       seconds_since_process_start());
         log_info(line);
         notifier_.ready("showing " + selection_->describe());
+        if (probe_after_first_frame_) {
+            probe_after_first_frame_ = false;
+            choose_render_method();
+        }
     }
     start_replay(done_s);
     const int every = config_.snapshot.every_n_frames;

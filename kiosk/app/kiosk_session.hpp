@@ -17,6 +17,7 @@
 #include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
 #include "app/stone_scene.hpp"
+#include "catalogue/catalogue_completion.hpp"
 #include "catalogue/catalogue_watcher.hpp"
 #include "display/display.hpp"
 #include "display/seat.hpp"
@@ -62,6 +63,9 @@ class KioskSession {
     double next_frame_allowed_s() const;
     Result<bool> make_gpu_objects();
     void switch_catalogue(Catalogue catalogue, double now_s);
+    // The startup catalogue validated whole (CatalogueCompletion): its other entries join the
+    // one on screen, or another catalogue is switched to where its later entries failed.
+    void complete_catalogue(Result<Catalogue> whole, double now_s);
     void rebuild_scene(double now_s);
     // render.method = auto: starts measuring the candidates (method_probe_run.hpp) while the
     // stone is shown with the safe choice (the table).
@@ -104,6 +108,8 @@ class KioskSession {
 
     std::unique_ptr<CatalogueWatcher> watcher_;
     std::optional<Catalogue> catalogue_;
+    // The startup catalogue's entries after its first, validated while it is shown.
+    std::unique_ptr<CatalogueCompletion> completion_;
     std::unique_ptr<SceneSelection> selection_;
     std::unique_ptr<StoneScene> scene_;
     bool scene_stale_ = true;
@@ -112,6 +118,7 @@ class KioskSession {
     DesignTables::KindTables scene_tables_;        // the tables the scene was made with
     RenderChoice render_;
     std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
+    bool probe_after_first_frame_ = false;   // auto: the probe waits for the first frame
     std::unique_ptr<MethodProbe> probe_;     // auto: measuring while the stone is shown
     std::optional<ProbeResult> probe_with_extras_;  // the first probe's, when extras are shed
 

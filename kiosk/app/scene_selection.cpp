@@ -4,6 +4,16 @@
 
 namespace gem::kiosk {
 
+namespace {
+
+// The same manifest entry: its name and the files it is drawn from.
+bool same_entry(const CatalogueStone& a, const CatalogueStone& b) {
+    return a.name == b.name && a.database == b.database && a.design == b.design &&
+           a.piece == b.piece && a.ring_obj == b.ring_obj;
+}
+
+}  // namespace
+
 SceneSelection::SceneSelection(std::vector<BackgroundPreset> backgrounds,
                                std::vector<LightingPreset> lightings)
     : backgrounds_(std::move(backgrounds)), lightings_(std::move(lightings)) {
@@ -17,6 +27,17 @@ void SceneSelection::set_catalogue(const Catalogue& catalogue) {
     stones_ = catalogue.stones;
     stone_ = 0;
     apply_stone_presets();
+}
+
+bool SceneSelection::complete_catalogue(const Catalogue& whole) {
+    const bool kept = stone_ < stones_.size() && stone_ < whole.stones.size() &&
+                      same_entry(stones_[stone_], whole.stones[stone_]);
+    stones_ = whole.stones;
+    if (!kept) {
+        stone_ = 0;
+        apply_stone_presets();
+    }
+    return kept;
 }
 
 void SceneSelection::next_stone() {

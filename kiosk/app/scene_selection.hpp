@@ -21,6 +21,10 @@ class SceneSelection {
     // A new catalogue starts at its first stone; the presets stay where they were unless the
     // stone names its own.
     void set_catalogue(const Catalogue& catalogue);
+    // The same catalogue with more of its stones checked (CatalogueCompletion): the stone on
+    // screen stays where the whole catalogue holds it at the same place; false where it does
+    // not (then it starts at the first stone, as a new catalogue).
+    bool complete_catalogue(const Catalogue& whole);
     void next_stone();
     // Background and lighting presets advance together: a preset is one look of the shop.
     void next_preset();

@@ -92,6 +92,9 @@ struct Catalogue {
     std::map<std::string, std::string> digests;
     // The key that signed the manifest, as minisign prints its id; empty when unsigned.
     std::string signed_by;
+    // Entries after `stones` not opened yet: the catalogue was opened for its first stone only
+    // (validate.hpp, Entries::first), and holds nothing of them until they are checked.
+    std::size_t unchecked = 0;
 };
 
 }  // namespace gem::kiosk

@@ -274,20 +274,22 @@ Result<fs::path> set_aside_rejected(const fs::path& source, const std::string& r
     return target;
 }
 
-Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options) {
+Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options, Entries entries,
+                                         std::stop_token stop) {
     const fs::path current = options.state_dir / "current";
     std::error_code ec;
     std::string why_not_current = current.string() + ": none installed";
     if (fs::exists(fs::symlink_status(current, ec))) {
         Result<Catalogue> installed =
-            validate_catalogue(current, options.trust, {}, DigestCheck::skip);
+            validate_catalogue(current, options.trust, stop, DigestCheck::skip, entries);
         if (installed) return installed;
         why_not_current = installed.error();
         log_warning(why_not_current + " (" + current.string() + "); using the default catalogue");
     }
     // The shipped catalogue is part of the kiosk's own installation, not a delivery: its
     // digests are checked where it has them, but no chain signs it.
-    Result<Catalogue> shipped = validate_catalogue(options.default_catalogue);
+    Result<Catalogue> shipped =
+        validate_catalogue(options.default_catalogue, {}, stop, DigestCheck::check, entries);
     if (shipped) return shipped;
     return Error{"no catalogue to show: " + why_not_current + "; default " +
                  options.default_catalogue.string() + ": " + shipped.error()};

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "catalogue/catalogue.hpp"
+#include "catalogue/validate.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -63,7 +64,10 @@ Result<std::filesystem::path> set_aside_rejected(const std::filesystem::path& so
                                                  const std::string& reason);
 
 // At start: state/current if it validates, else the shipped default; a fault in the first is
-// logged as a warning. The error says why neither could be used.
-Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options);
+// logged as a warning. The error says why neither could be used. With Entries::first, each is
+// validated as far as its first stone that can be shown (the kiosk's first frame waits for no
+// more), and CatalogueCompletion validates it whole after.
+Result<Catalogue> load_startup_catalogue(const CatalogueOptions& options,
+                                         Entries entries = Entries::all, std::stop_token stop = {});
 
 }  // namespace gem::kiosk

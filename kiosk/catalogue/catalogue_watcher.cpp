@@ -2,7 +2,6 @@
 
 #include <fcntl.h>
 #include <poll.h>
-#include <sys/eventfd.h>
 #include <sys/inotify.h>
 #include <unistd.h>
 
@@ -12,6 +11,7 @@
 #include <system_error>
 
 #include "catalogue/catalogue_store.hpp"
+#include "catalogue/event_fd.hpp"
 #include "catalogue/manifest.hpp"
 #include "catalogue/validate.hpp"
 #include "service/log.hpp"
@@ -28,16 +28,11 @@ namespace {
 constexpr std::uint32_t kWatchMask = IN_CREATE | IN_DELETE | IN_MOVED_FROM | IN_MOVED_TO |
                                      IN_CLOSE_WRITE | IN_ATTRIB | IN_DELETE_SELF | IN_ONLYDIR;
 
+// Every event inotify has queued.
 void drain(int fd) {
     char buffer[4096];
     while (::read(fd, buffer, sizeof buffer) > 0) {
     }
-}
-
-void signal_eventfd(int fd) {
-    const std::uint64_t one = 1;
-    // Only EAGAIN can fail here (the counter is near 2^64), and then it is readable already.
-    [[maybe_unused]] const ssize_t n = ::write(fd, &one, sizeof one);
 }
 
 }  // namespace
@@ -45,8 +40,8 @@ void signal_eventfd(int fd) {
 Result<std::unique_ptr<CatalogueWatcher>> CatalogueWatcher::start(const CatalogueOptions& options) {
     const int inotify_fd = ::inotify_init1(IN_NONBLOCK | IN_CLOEXEC);
     if (inotify_fd < 0) return Error{std::string("inotify_init1: ") + std::strerror(errno)};
-    const int wake_fd = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
-    const int ready_fd = ::eventfd(0, EFD_NONBLOCK | EFD_CLOEXEC);
+    const int wake_fd = make_event_fd();
+    const int ready_fd = make_event_fd();
     if (wake_fd < 0 || ready_fd < 0) {
         const int err = errno;
         ::close(inotify_fd);
@@ -66,7 +61,7 @@ CatalogueWatcher::CatalogueWatcher(const CatalogueOptions& options, int inotify_
 
 CatalogueWatcher::~CatalogueWatcher() {
     thread_.request_stop();
-    signal_eventfd(wake_fd_);
+    signal_event_fd(wake_fd_);
     if (thread_.joinable()) thread_.join();
     ::close(inotify_fd_);
     ::close(wake_fd_);
@@ -74,14 +69,14 @@ CatalogueWatcher::~CatalogueWatcher() {
 }
 
 std::optional<Catalogue> CatalogueWatcher::take_switch() {
-    drain(ready_fd_);
+    drain_event_fd(ready_fd_);
     std::lock_guard lock(mutex_);
     return std::exchange(switch_, std::nullopt);
 }
 
 void CatalogueWatcher::rescan() {
     rescan_requested_ = true;
-    signal_eventfd(wake_fd_);
+    signal_event_fd(wake_fd_);
 }
 
 CatalogueWatcher::Counters CatalogueWatcher::counters() const {
@@ -150,7 +145,7 @@ void CatalogueWatcher::run(std::stop_token stop) {
             break;
         }
         drain(inotify_fd_);
-        drain(wake_fd_);
+        drain_event_fd(wake_fd_);
         if (rescan_requested_) {
             // A full disk may have been cleared since: try those sources again.
             std::erase_if(handled_,
@@ -289,7 +284,7 @@ void CatalogueWatcher::process(const fs::path& source, const DirectoryFingerprin
         switch_ = std::move(installed).value();
     }
     ++installs_;
-    signal_eventfd(ready_fd_);
+    signal_event_fd(ready_fd_);
 }
 
 void CatalogueWatcher::refuse(const fs::path& source, std::uint64_t fingerprint,

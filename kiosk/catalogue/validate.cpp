@@ -27,7 +27,7 @@ std::string relative_message(const std::string& message, const std::filesystem::
 }  // namespace
 
 Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const CatalogueTrust& trust,
-                                     std::stop_token stop, DigestCheck digests) {
+                                     std::stop_token stop, DigestCheck digests, Entries entries) {
     std::string label = dir.filename().string();
     auto reject = [&](const std::string& fault) {
         return Error{"catalogue '" + label + "' rejected: " + fault};
@@ -63,7 +63,12 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const Cat
         if (!whole) return reject(whole.error());
     }
     std::vector<CatalogueStone> kept;
-    for (CatalogueStone& stone : catalogue.stones) {
+    for (std::size_t i = 0; i < catalogue.stones.size(); ++i) {
+        CatalogueStone& stone = catalogue.stones[i];
+        if (entries == Entries::first && !kept.empty()) {
+            catalogue.unchecked = catalogue.stones.size() - i;
+            break;
+        }
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
         if (!stone.piece.empty()) {
             // A piece that cannot be read (a missing stone file, stones that intersect, a

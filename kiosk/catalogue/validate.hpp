@@ -24,8 +24,14 @@ namespace gem::kiosk {
 // kiosk writes, and its databases' own checksums (checked still) find damage; so a restart
 // does not hash a whole catalogue before its first frame.
 enum class DigestCheck { check, skip };
+// Which stones are opened and checked: all, or only the first that can be shown (those before
+// it that cannot are left out as usual), so that a catalogue of hundreds of entries shows its
+// first at once; the Catalogue then counts the others as unchecked, and
+// CatalogueCompletion checks them on a thread of its own.
+enum class Entries { all, first };
 Result<Catalogue> validate_catalogue(const std::filesystem::path& dir,
                                      const CatalogueTrust& trust = {}, std::stop_token stop = {},
-                                     DigestCheck digests = DigestCheck::check);
+                                     DigestCheck digests = DigestCheck::check,
+                                     Entries entries = Entries::all);
 
 }  // namespace gem::kiosk

@@ -65,6 +65,27 @@ TEST(SceneSelection, StonesCycleInCatalogueOrderAndBringTheirPresets) {
     EXPECT_EQ(s.stone().name, "a");  // wraps round
 }
 
+// The startup catalogue's first stone, then the whole catalogue (CatalogueCompletion): the stone
+// on screen stays where the whole holds the same entry at its place, else the first is shown.
+TEST(SceneSelection, AWholeCatalogueKeepsTheStoneOnScreenWhereItHoldsIt) {
+    SceneSelection s(backgrounds(), lightings());
+    Catalogue first = catalogue();
+    first.stones.resize(1);
+    first.unchecked = 2;
+    s.set_catalogue(first);
+    s.next_stone();  // one stone so far: it wraps to itself
+    EXPECT_EQ(s.stone().name, "a");
+    EXPECT_TRUE(s.complete_catalogue(catalogue()));
+    EXPECT_EQ(s.stone().name, "a");
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "b");  // the others have joined
+    // Shown from another file than the whole catalogue names at that place: not the same.
+    Catalogue moved = catalogue();
+    moved.stones[1].database = "elsewhere.gemdb";
+    EXPECT_FALSE(s.complete_catalogue(moved));
+    EXPECT_EQ(s.stone().name, "a");
+}
+
 TEST(SceneSelection, PresetsAdvanceTogetherAndWrap) {
     SceneSelection s(backgrounds(), lightings());
     s.next_preset();

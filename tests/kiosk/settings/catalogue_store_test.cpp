@@ -3,6 +3,7 @@
 // go, and the kiosk starts from state/current or else the shipped default.
 
 #include <gtest/gtest.h>
+#include <poll.h>
 #include <sys/resource.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -11,6 +12,7 @@
 #include <csignal>
 #include <thread>
 
+#include "catalogue/catalogue_completion.hpp"
 #include "catalogue/catalogue_store.hpp"
 #include "catalogue/validate.hpp"
 #include "catalogue_test_support.hpp"
@@ -187,6 +189,63 @@ TEST(CatalogueStore, StartsFromCurrentElseTheDefault) {
     ASSERT_FALSE(none.ok());
     EXPECT_NE(none.error().find("truncated"), std::string::npos) << none.error();
     EXPECT_NE(none.error().find("catalogue.toml"), std::string::npos) << none.error();
+}
+
+// At start the installed copy is opened for its first stone; CatalogueCompletion validates it
+// whole while that stone is shown and hands the whole catalogue over; where a later entry is
+// damaged, it hands the shipped default instead, and the warning says why.
+TEST(CatalogueStore, TheStartupCatalogueIsCompletedInTheBackground) {
+    const fs::path root = fresh_dir("store-completion");
+    const CatalogueOptions options = startup_options(root);
+    write_text(root / "installed" / "catalogue.toml", R"([catalogue]
+name = "spring"
+[[stone]]
+name = "Round"
+database = "stones/round.gemdb"
+[[stone]]
+name = "Second"
+database = "stones/second.gemdb"
+)");
+    write_bytes(root / "installed" / "stones" / "round.gemdb", read_bytes(tiny_database()));
+    write_bytes(root / "installed" / "stones" / "second.gemdb", read_bytes(tiny_database()));
+    auto copy = copy_catalogue(root / "installed", options.state_dir, "spring");
+    ASSERT_TRUE(copy.ok());
+    ASSERT_TRUE(make_current(options.state_dir, copy.value()).ok());
+    const auto complete = [&] {
+        auto completion = CatalogueCompletion::start(options);
+        EXPECT_TRUE(completion.ok()) << completion.error();
+        std::optional<Result<Catalogue>> whole;
+        EXPECT_TRUE(wait_until([&] {
+            struct pollfd p {
+                completion.value()->event_fd(), POLLIN, 0
+            };
+            if (::poll(&p, 1, 0) == 1) whole = completion.value()->take();
+            return whole.has_value();
+        }));
+        return whole.value_or(Error{"never completed"});
+    };
+    auto first = load_startup_catalogue(options, Entries::first);
+    ASSERT_TRUE(first.ok()) << first.error();
+    EXPECT_EQ(first.value().name, "spring");
+    EXPECT_EQ(first.value().stones.size(), 1u);
+    EXPECT_EQ(first.value().unchecked, 1u);
+    {
+        auto whole = complete();
+        ASSERT_TRUE(whole.ok()) << whole.error();
+        EXPECT_EQ(whole.value().directory, first.value().directory);
+        EXPECT_EQ(whole.value().stones.size(), 2u);
+    }
+    fs::resize_file(copy.value() / "stones" / "second.gemdb", 100);
+    first = load_startup_catalogue(options, Entries::first);
+    ASSERT_TRUE(first.ok()) << first.error();
+    EXPECT_EQ(first.value().name, "spring");  // its first stone is intact
+    StderrCapture capture;
+    auto whole = complete();
+    ASSERT_TRUE(whole.ok()) << whole.error();
+    EXPECT_EQ(whole.value().name, "shipped");
+    EXPECT_NE(capture.text().find("catalogue 'spring' rejected: stones/second.gemdb: truncated"),
+              std::string::npos)
+        << capture.text();
 }
 
 // The installed copy is not hashed again at start (it was when installed): a file whose digest

@@ -132,6 +132,58 @@ TEST(CatalogueValidate, BrokenRingNamesFileAndLine) {
               "index 9 out of range (4 vertices so far)");
 }
 
+// Opened for its first stone only (the kiosk's start), a catalogue is not read past it: a later
+// database that is damaged is not seen, and what is not checked is counted. Whole, it is refused.
+TEST(CatalogueValidate, OpenedForItsFirstStoneItReadsNothingAfterIt) {
+    const fs::path dir = two_stone_catalogue("validate-first");
+    auto bytes = read_bytes(tiny_database());
+    bytes.resize(bytes.size() / 2);
+    write_bytes(dir / "stones" / "second.gemdb", bytes);
+    write_text(dir / "rings" / "tetra.obj", "f 1 2 9\n");
+    auto first = validate_catalogue(dir, {}, {}, DigestCheck::check, Entries::first);
+    ASSERT_TRUE(first.ok()) << first.error();
+    ASSERT_EQ(first.value().stones.size(), 1u);
+    EXPECT_EQ(first.value().stones[0].name, "Round");
+    ASSERT_NE(first.value().stones[0].opened, nullptr);
+    EXPECT_EQ(first.value().unchecked, 1u);
+    EXPECT_NE(rejection("whole", dir).find("stones/second.gemdb: truncated"), std::string::npos);
+}
+
+// A first entry that cannot be shown is left out as usual, and the next one is the first.
+TEST(CatalogueValidate, OpenedForItsFirstStoneALeftOutEntryIsPassed) {
+    const fs::path dir = fresh_dir("validate-first-design");
+    write_text(dir / "catalogue.toml", R"([catalogue]
+name = "designs"
+[[stone]]
+name = "Odd"
+design = "odd.toml"
+[[stone]]
+name = "Round"
+design = "round.toml"
+[[stone]]
+name = "Round again"
+design = "round.toml"
+[[stone]]
+name = "Odd again"
+design = "odd.toml"
+)");
+    write_text(dir / "round.toml", "[stone]\ncut = \"round\"\n[material]\nname = \"diamond\"\n");
+    write_text(dir / "odd.toml", "[stone]\ncut = \"dodecahedron\"\n");
+    auto first = validate_catalogue(dir, {}, {}, DigestCheck::check, Entries::first);
+    ASSERT_TRUE(first.ok()) << first.error();
+    const Catalogue& c = first.value();
+    ASSERT_EQ(c.stones.size(), 1u);
+    EXPECT_EQ(c.stones[0].name, "Round");
+    EXPECT_EQ(c.unchecked, 2u);
+    ASSERT_EQ(c.left_out.size(), 1u);
+    EXPECT_EQ(c.left_out[0].rfind("stone 'Odd' left out", 0), 0u) << c.left_out[0];
+    auto whole = validate_catalogue(dir);
+    ASSERT_TRUE(whole.ok()) << whole.error();
+    EXPECT_EQ(whole.value().stones.size(), 2u);
+    EXPECT_EQ(whole.value().left_out.size(), 2u);
+    EXPECT_EQ(whole.value().unchecked, 0u);
+}
+
 TEST(CatalogueValidate, ManifestFaultNamesTheDirectory) {
     const fs::path dir = two_stone_catalogue("validate-manifest");
     write_text(dir / "catalogue.toml", "[catalogue]\nname = \"spring\"\n");
