@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
-# A chain's catalogue made from the shipped one: N entries, half pieces (copies of the shipped
-# halo, three-stone and eternity-band files, each its own file) and half designs in rings
-# (copies of the shipped stone files), then the shipped databases, linked rather than copied.
+# A chain's catalogue made from the shipped one: the shipped databases (linked rather than
+# copied), then N entries, pieces (copies of the shipped halo, three-stone and eternity-band
+# files, each its own file) and designs in rings (copies of the shipped stone files) in turn.
 # For the kiosk's start-up figures with a catalogue of hundreds of entries (docs/performance.md).
 #
 # Usage: tests/bench/large_catalogue.sh SHIPPED_CATALOGUE_DIR OUT_DIR [N]
@@ -22,16 +22,16 @@ metals=(platinum white_gold yellow_gold)
   done
   pieces=("$shipped"/pieces/*.toml)
   stones=("$shipped"/stones/*.toml)
-  for ((i = 0; i < count / 2; i++)); do
-    piece=${pieces[i % ${#pieces[@]}]}
-    cp "$piece" "$out/pieces/piece-$i.toml"
-    printf '\n[[stone]]\nname = "Piece %d"\npiece = "pieces/piece-%d.toml"\n' "$i" "$i"
-  done
-  for ((i = 0; i < count - count / 2; i++)); do
-    stone=${stones[i % ${#stones[@]}]}
-    cp "$stone" "$out/stones/design-$i.toml"
-    printf '\n[[stone]]\nname = "Design %d"\ndesign = "stones/design-%d.toml"\nring = "parametric"\nmetal = "%s"\n' \
-      "$i" "$i" "${metals[i % 3]}"
+  # Pieces and designs in turn, so that a few taps show both.
+  for ((i = 0; i < count; i++)); do
+    if ((i % 2 == 0)); then
+      cp "${pieces[i / 2 % ${#pieces[@]}]}" "$out/pieces/piece-$i.toml"
+      printf '\n[[stone]]\nname = "Piece %d"\npiece = "pieces/piece-%d.toml"\n' "$i" "$i"
+    else
+      cp "${stones[i / 2 % ${#stones[@]}]}" "$out/stones/design-$i.toml"
+      printf '\n[[stone]]\nname = "Design %d"\ndesign = "stones/design-%d.toml"\nring = "parametric"\nmetal = "%s"\n' \
+        "$i" "$i" "${metals[i % 3]}"
+    fi
   done
 } >"$out/catalogue.toml"
 echo "wrote $out: $(grep -c '^\[\[stone\]\]' "$out/catalogue.toml") entries"
