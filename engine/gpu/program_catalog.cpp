@@ -39,6 +39,8 @@ std::vector<ProgramSpec> all_program_specs() {
          kShadingFeatures | kFireExact},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
+        // The metal's depth alone (RingRenderer::draw), before it is shaded where it is seen.
+        {"ring_depth", {"ring.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
         {"phong",
          {"stone.vert"},

@@ -67,9 +67,12 @@ class RingRenderer {
                                          const glm::dvec3& centre = glm::dvec3(0.0)) const;
 
   private:
-    RingRenderer(ProgramVariants ring, Program background, MetalEnvironment environment);
+    RingRenderer(ProgramVariants ring, Program depth, Program background,
+                 MetalEnvironment environment);
+    // `depth_first`: the metal's depth drawn alone first, then shaded only where it is seen.
     void draw_mesh(const Program& ring, const glm::mat4& view_projection, const glm::vec3& eye,
-                   bool eye_at_infinity, const ShadingSettings& lights, bool cull_back) const;
+                   bool eye_at_infinity, const ShadingSettings& lights, bool cull_back,
+                   bool depth_first = false) const;
     // metal.glsl's uniforms, its two textures on `first_unit` and the next.
     void set_metal_uniforms(const Program& program, const ShadingSettings& lights,
                             int first_unit) const;
@@ -79,6 +82,7 @@ class RingRenderer {
 
     ProgramVariants ring_;             // one per light count, all built by make()
     ProgramVariants ring_sees_piece_;  // ... seeing its piece (SEES_PIECE): see_piece()
+    Program depth_;                    // the metal's depth alone
     std::optional<PieceSight> sight_;
     float environment_mean_ = 0.0f;  // its three channels' mean
     Program background_;

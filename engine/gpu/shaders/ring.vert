@@ -4,6 +4,9 @@ layout(location = 1) in vec3 a_normal;
 
 uniform mat4 u_view_projection;  // view_projection() or cube_face_projection()
 
+// The same depth from the depth pass (ring_depth) and the shading pass after it.
+invariant gl_Position;
+
 out vec3 v_position;
 out vec3 v_normal;
 
