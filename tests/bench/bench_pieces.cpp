@@ -67,6 +67,13 @@ struct StonePixels {
     // only the kept ones, and the difference is what it saves.
     long shaded = 0;
     long kept = 0;
+    // The 4×4 pixel blocks holding a kept stone pixel, and the sum over them of the facets their
+    // kept pixels see (each stone's own): a block is shaded once per facet it meets where each
+    // facet is drawn apart (a fragment shader runs on whole blocks, its lanes outside the facet
+    // idle), once where a pass shades whatever stone each pixel sees. Their ratio bounds what
+    // such a pass saves on shader runs; the GPU's facets are triangles, so it is more.
+    long blocks = 0;
+    long block_facets = 0;
 };
 
 // The stones' pixels, each stone looked for only inside its bounding square, and the metal
@@ -76,6 +83,7 @@ StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
     const double none = std::numeric_limits<double>::infinity();
     std::vector<double> depth(static_cast<std::size_t>(w) * h, none);
     std::vector<std::uint8_t> centre(depth.size(), 0);
+    std::vector<std::uint32_t> seen(depth.size(), 0);  // 1 + stone << 16 | facet, nearest
     StonePixels count;
     for (std::size_t i = 0; i < piece.stones.size(); ++i) {
         const gem::Stone& stone = piece.stone_of(i);
@@ -107,6 +115,7 @@ StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
                 if (hit.t < depth[p]) {
                     ++count.shaded;
                     depth[p] = hit.t;
+                    seen[p] = 1 + (static_cast<std::uint32_t>(i) << 16 | hit.facet);
                 }
             }
         }
@@ -126,6 +135,23 @@ StonePixels stone_pixels(const gem::Piece& piece, const gem::Camera& camera) {
                 metal_hits->next_entry(ray.origin, ray.direction, gem::kNoFacet, hit) &&
                 hit.t < depth[p];
             count.kept += behind_metal ? 0 : 1;
+            if (behind_metal) seen[p] = 0;
+        }
+    }
+    for (int by = 0; by < h; by += 4) {
+        for (int bx = 0; bx < w; bx += 4) {
+            std::uint32_t facets[16];
+            int n = 0;
+            for (int y = by; y < std::min(by + 4, h); ++y) {
+                for (int x = bx; x < std::min(bx + 4, w); ++x) {
+                    const std::uint32_t id = seen[static_cast<std::size_t>(y) * w + x];
+                    if (id != 0 && std::find(facets, facets + n, id) == facets + n) {
+                        facets[n++] = id;
+                    }
+                }
+            }
+            count.blocks += n > 0;
+            count.block_facets += n;
         }
     }
     return count;
@@ -273,16 +299,17 @@ int main(int argc, char** argv) {
     }
     std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
                 width, height, exact_fire ? "exact" : "first-order", frames);
-    std::printf("%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s %12s\n",
-                "piece", "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms",
-                "metal ms", "x first", "centre px", "others px", "shaded px", "kept px",
-                "metal tri", "sight ms", "still metal", "still stones");
+    std::printf(
+        "%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s %12s %8s %13s\n",
+        "piece", "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms", "metal ms",
+        "x first", "centre px", "others px", "shaded px", "kept px", "metal tri", "sight ms",
+        "still metal", "still stones", "blocks", "facets/block");
     const double first = median(subjects.front().frame_ms);
     for (const Subject& s : subjects) {
         const StonePixels px = stone_pixels(*s.piece, s.camera);
         std::printf(
             "%-20s %8s %7zu %9.1f %9.1f %9.1f %9.2f %9.1f %9.2f %10ld %10ld %10ld %10ld %9zu "
-            "%9.1f %11.1f %12.1f\n",
+            "%9.1f %11.1f %12.1f %8ld %13.2f\n",
             s.file.c_str(),
             s.tabled   ? "tables"
             : s.chosen ? "chosen"
@@ -290,7 +317,8 @@ int main(int argc, char** argv) {
             s.piece->stones.size(), median(s.frame_ms), median(s.stone_ms), median(s.depth_ms),
             median(s.submit_ms), median(s.metal_ms), median(s.frame_ms) / first, px.centre,
             px.others, px.shaded, px.kept, s.piece->metal.indices.size() / 3, s.sight_ms,
-            median(s.still_metal_ms), median(s.still_stone_ms));
+            median(s.still_metal_ms), median(s.still_stone_ms), px.blocks,
+            px.blocks > 0 ? static_cast<double>(px.block_facets) / px.blocks : 0.0);
     }
     return 0;
 }
