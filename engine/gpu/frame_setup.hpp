@@ -35,6 +35,11 @@ struct FrameSetup {
     // needs; `triangles` traces non-convex stones through their triangles (a benchmark's
     // comparison).
     ExitSearch trace_search = ExitSearch::measured;
+    // Where the method can (StoneMethod::shades_by_visibility) and the frame is drawn one
+    // sample a pixel: the stones' depth pass also writes each pixel's stone and entry facet,
+    // and each stone is shaded as the rectangle about it, its pixels in whole blocks, not facet
+    // by facet (frame_renderer.hpp). False: facet by facet always (to measure the two).
+    bool visibility_pass = true;
     TableOptions table;
     // What surrounds everything; must outlive the renderer (an orthographic frame's background
     // is its radiance along the view).
@@ -72,7 +77,10 @@ struct FrameStats {
     // other passes.
     double stone_ms = 0.0;
     double stone_depth_ms = 0.0;  // the stones' depth pass (StoneMethod::draw_depth), in stone_ms
-    double metal_ms = 0.0;        // the ring's or piece's metal pass alone, as stone_ms
+    // The stones were shaded by the visibility pass (FrameSetup::visibility_pass), each as the
+    // rectangle about it, not facet by facet.
+    bool stones_by_visibility = false;
+    double metal_ms = 0.0;  // the ring's or piece's metal pass alone, as stone_ms
     // The CPU's time issuing the stone pass's draws (any FrameWait): what drawing a piece's
     // stones one call each costs beyond their pixels.
     double stone_submit_ms = 0.0;

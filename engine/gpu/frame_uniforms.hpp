@@ -47,6 +47,11 @@ struct StoneFrame {
     // In a piece's still view after its first frame: the piece its exits follow
     // (stone_sight.glsl); null: the cube alone.
     const RingRenderer* piece_sight = nullptr;
+    // Where the visibility pass ran (FrameRenderer::render): its target, an R16UI texture of
+    // the picture's size holding each pixel's entry facet, and this stone's number (1 + its
+    // place in the frame) in the stencil where it is seen; 0: the stone is drawn facet by facet.
+    GLuint visibility = 0;
+    std::uint32_t stone_id = 0;
 };
 
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).

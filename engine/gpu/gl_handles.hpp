@@ -118,10 +118,10 @@ inline Renderbuffer make_depth_renderbuffer(int width, int height, int samples =
     Renderbuffer depth = make_renderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
     if (samples > 1) {
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH_COMPONENT24, width,
+        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, GL_DEPTH24_STENCIL8, width,
                                          height);
     } else {
-        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH_COMPONENT24, width, height);
+        glRenderbufferStorage(GL_RENDERBUFFER, GL_DEPTH24_STENCIL8, width, height);
     }
     return depth;
 }
@@ -132,7 +132,8 @@ inline Framebuffer make_framebuffer_with(GLuint colour, GLuint depth = 0) {
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, colour, 0);
     if (depth != 0) {
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER, depth);
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
+                                  depth);
     }
     return framebuffer;
 }

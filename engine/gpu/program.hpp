@@ -42,6 +42,7 @@ class Program {
 
     // Setters on the program in use; a missing uniform is silently skipped, as GL does.
     void set(const char* name, int v) const { glUniform1i(uniform(name), v); }
+    void set(const char* name, std::uint32_t v) const { glUniform1ui(uniform(name), v); }
     void set(const char* name, float v) const { glUniform1f(uniform(name), v); }
     void set(const char* name, const glm::vec2& v) const { glUniform2fv(uniform(name), 1, &v.x); }
     void set(const char* name, const glm::vec3& v) const { glUniform3fv(uniform(name), 1, &v.x); }

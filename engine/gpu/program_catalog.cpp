@@ -16,7 +16,8 @@ std::vector<std::string> stone_sources(const char* method) {
 
 std::vector<ProgramSpec> all_program_specs() {
     constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
-    constexpr std::uint32_t kTraceFeatures = kShadingFeatures | kFireFirstOrder | kFireExact;
+    constexpr std::uint32_t kTraceFeatures =
+        kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -36,9 +37,11 @@ std::vector<ProgramSpec> all_program_specs() {
          {"stone.vert"},
          stone_sources("trace.frag"),
          {"NON_CONVEX"},
-         kShadingFeatures | kFireExact},
+         kShadingFeatures | kFireExact | kVisibility},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
+        // The stones' depth with each pixel's stone and entry facet (frame_renderer.hpp).
+        {"stone_visibility", {"stone.vert"}, {"stone_visibility.frag"}, {}},
         // The metal's depth alone (RingRenderer::draw), before it is shaded where it is seen.
         {"ring_depth", {"ring.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).

@@ -21,6 +21,7 @@ std::vector<std::string> feature_defines(std::uint32_t features) {
         defines.push_back("SPECULAR_POWER " + std::to_string(power));
     }
     if ((features & kSeesPiece) != 0) defines.emplace_back("SEES_PIECE");
+    if ((features & kVisibility) != 0) defines.emplace_back("VISIBILITY");
     return defines;
 }
 

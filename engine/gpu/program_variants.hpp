@@ -31,6 +31,9 @@ enum ShaderFeature : std::uint32_t {
     // SEES_PIECE: a still frame's rays follow the whole piece (piece_path.glsl): the metal's
     // reflections, the stones' exits. Above the light count and the specular power (bit 19).
     kSeesPiece = 1u << 19,
+    // VISIBILITY: a stone drawn as the rectangle about it, each pixel's stone and entry facet
+    // read from the visibility pass (frame_renderer.hpp): its pixels shaded in whole blocks.
+    kVisibility = 1u << 20,
 };
 // Bits 6-8 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
 inline constexpr std::uint32_t kLightCountShift = 6;
@@ -56,6 +59,7 @@ constexpr int specular_power_of(std::uint32_t features) {
     return static_cast<int>((features & kSpecularPowerBits) >> kSpecularPowerShift);
 }
 static_assert((kSeesPiece & kSpecularPowerBits) == 0 && kSeesPiece > kSpecularPowerBits);
+static_assert(kVisibility > kSeesPiece);
 // What shading_features() (frame_uniforms.hpp) may ask of a stone method's program.
 inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfinity | kAbsorbing |
                                                   kLightCountBits | kSpecularPowerBits | kSeesPiece;

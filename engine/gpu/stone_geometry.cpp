@@ -168,6 +168,15 @@ void StoneGeometry::draw_depth() const {
     glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
 }
 
+void StoneGeometry::draw_visibility(std::uint32_t stone_id) const {
+    glDisable(GL_BLEND);
+    glEnable(GL_STENCIL_TEST);
+    glStencilMask(0xff);
+    glStencilFunc(GL_ALWAYS, static_cast<GLint>(stone_id), 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
+    draw_front_triangles(GL_LESS);
+}
+
 void StoneGeometry::draw_front_triangles(GLenum depth_test) const {
     glEnable(GL_DEPTH_TEST);
     glDepthFunc(depth_test);

@@ -42,6 +42,10 @@ class StoneGeometry {
     // The same faces' depth alone (GL_LESS), colour writes masked off and restored, with the
     // caller's program (stone_depth) in use.
     void draw_depth() const;
+    // The same faces' depth (GL_LESS) with the colours the caller's program writes
+    // (stone_visibility into the visibility target; the scene's draw buffer none), and
+    // `stone_id` into the stencil where they are nearest; leaves the stencil test on.
+    void draw_visibility(std::uint32_t stone_id) const;
     // Every triangle with the caller's state (phong's passes).
     void draw_triangles() const;
 

@@ -50,6 +50,10 @@ class StoneMethod {
         (void)kinds;
         return false;
     }
+    // Whether draw_depth() and draw() follow StoneFrame::visibility where it is set: the
+    // depth pass writes each pixel's stone and entry facet, and draw() shades each stone as the
+    // rectangle about it, its pixels in whole blocks (frame_renderer.hpp).
+    virtual bool shades_by_visibility() const { return false; }
 
     // A method with models per kind of stone (the trace: depth and fire, stone_models.hpp);
     // the others have none: model() is empty and draw_alone() refuses.

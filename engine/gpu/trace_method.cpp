@@ -28,7 +28,8 @@ namespace {
 constexpr int kEnvironmentUnit = 0;
 constexpr int kStoneUnit = 1;
 constexpr int kPieceSightUnit = 2;  // and the next RingRenderer::kPieceSightUnits - 1
-static_assert(kPieceSightUnit + RingRenderer::kPieceSightUnits <= 16);
+constexpr int kVisibilityUnit = kPieceSightUnit + RingRenderer::kPieceSightUnits;
+static_assert(kVisibilityUnit < 16);
 
 // A GLSL float literal with nine significant digits (a float's round trip) and always a point
 // or an exponent: "1" would be an int, and GLSL ES does not mix ints into float arithmetic.
@@ -220,7 +221,10 @@ const char* to_string(ExitSearch search) {
 }
 
 TraceMethod::TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex)
-    : geometry_(std::move(geometry)), programs_(std::move(programs)), convex_(convex) {}
+    : geometry_(std::move(geometry)),
+      programs_(std::move(programs)),
+      no_attributes_(make_vertex_array()),
+      convex_(convex) {}
 
 Result<const Program*> TraceMethod::program(std::uint32_t features) {
     return programs_.get(features, [&](const Program& built) { geometry_.attach(built); });
@@ -319,7 +323,8 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     assert(frame.environment != nullptr);
     const std::uint32_t features =
         shading_features(frame) |
-        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr);
+        fire_features(dispersion, convex_, frame.still.wavelengths != nullptr) |
+        (frame.visibility != 0 ? kVisibility : 0u);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -345,13 +350,62 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
                                             : channel_indices(frame.material));
     p.set("u_channel_mix", still != nullptr ? glm::mat3(still->mix) : glm::mat3(1.0f));
 
-    geometry_.draw_front_faces();
+    if (frame.visibility != 0) {
+        draw_rectangle(p, frame);
+    } else {
+        geometry_.draw_front_faces();
+    }
     return gl_check("trace pass");
+}
+
+void TraceMethod::draw_rectangle(const Program& program, const StoneFrame& frame) const {
+    glActiveTexture(GL_TEXTURE0 + kVisibilityUnit);
+    glBindTexture(GL_TEXTURE_2D, frame.visibility);
+    glActiveTexture(GL_TEXTURE0);
+    program.set("u_visibility", kVisibilityUnit);
+    // The stone's corners through the matrix its depth pass drew them with (orthographic: w is
+    // 1), and a pixel more each way.
+    const glm::mat4 vp = stone_view_projection(frame);
+    glm::vec2 lo(1.0f), hi(-1.0f);
+    for (const glm::dvec3& v : frame.stone->vertices) {
+        const glm::vec4 clip = vp * glm::vec4(glm::vec3(v), 1.0f);
+        const glm::vec2 ndc = glm::vec2(clip) / clip.w;
+        lo = glm::min(lo, ndc);
+        hi = glm::max(hi, ndc);
+    }
+    const glm::vec2 pixel(2.0f / static_cast<float>(frame.camera.width()),
+                          2.0f / static_cast<float>(frame.camera.height()));
+    lo = glm::max(lo - pixel, glm::vec2(-1.0f));
+    hi = glm::min(hi + pixel, glm::vec2(1.0f));
+    if (lo.x >= hi.x || lo.y >= hi.y) return;
+    program.set("u_quad", glm::vec4(lo, hi));
+    // Which stone each pixel shows was decided by the visibility pass's depth test: its stencil
+    // holds the stone, so a block with none of its pixels is never shaded.
+    glEnable(GL_STENCIL_TEST);
+    glStencilFunc(GL_EQUAL, static_cast<GLint>(frame.stone_id), 0xff);
+    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
+    glDisable(GL_DEPTH_TEST);
+    glDepthMask(GL_FALSE);
+    glDisable(GL_CULL_FACE);
+    glEnable(GL_BLEND);
+    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
+    glBindVertexArray(no_attributes_.get());
+    glDrawArrays(GL_TRIANGLES, 0, 6);
+    glBindVertexArray(0);
+    glDisable(GL_BLEND);
+    glDepthMask(GL_TRUE);
+    glEnable(GL_DEPTH_TEST);
 }
 
 void TraceMethod::draw_depth(const StoneFrame& frame, const Program& depth) const {
     depth.set("u_view_projection", stone_view_projection(frame));
-    geometry_.draw_depth();
+    if (frame.visibility != 0) {
+        // Into the visibility target alone (the scene's draw buffer is none): a colour mask
+        // would mask it too.
+        geometry_.draw_visibility(frame.stone_id);
+    } else {
+        geometry_.draw_depth();
+    }
 }
 
 namespace {
@@ -360,8 +414,13 @@ namespace {
 // kind traced with its own model (depth, fire), the setup's to begin with.
 class TraceStones final : public StoneMethod {
   public:
-    TraceStones(const FrameSetup& setup, Program depth)
-        : trace_(setup.trace), search_(setup.trace_search), depth_(std::move(depth)) {}
+    TraceStones(const FrameSetup& setup, Program depth, Program visibility)
+        : trace_(setup.trace),
+          search_(setup.trace_search),
+          depth_(std::move(depth)),
+          visibility_(std::move(visibility)) {}
+
+    bool shades_by_visibility() const override { return true; }
 
     Result<bool> add_kind(const Stone& stone, const StoneModel& model) {
         auto made = TraceMethod::make(stone, search_);
@@ -387,9 +446,11 @@ class TraceStones final : public StoneMethod {
 
     Result<bool> draw_depth(const std::vector<StoneFrame>& frames,
                             const std::vector<std::size_t>& kinds) override {
-        depth_.use();
+        const Program& depth =
+            !frames.empty() && frames.front().visibility != 0 ? visibility_ : depth_;
+        depth.use();
         for (std::size_t i = 0; i < frames.size(); ++i) {
-            methods_[kinds[i]]->draw_depth(frames[i], depth_);
+            methods_[kinds[i]]->draw_depth(frames[i], depth);
         }
         auto clean = gl_check("trace depth pass");
         if (!clean) return Error{clean.error()};
@@ -420,8 +481,9 @@ class TraceStones final : public StoneMethod {
 
   private:
     TraceSettings trace_;
-    ExitSearch search_;  // a non-convex kind's
-    Program depth_;      // stone_depth
+    ExitSearch search_;   // a non-convex kind's
+    Program depth_;       // stone_depth
+    Program visibility_;  // stone_visibility
     std::vector<std::unique_ptr<TraceMethod>> methods_;
     std::vector<bool> convex_;
     std::vector<StoneModel> models_;
@@ -434,7 +496,10 @@ Result<std::unique_ptr<StoneMethod>> make_trace_stones(const FrameSetup& setup,
                                                        const std::vector<const Stone*>& kinds) {
     auto depth = build_program("stone_depth");
     if (!depth) return Error{depth.error()};
-    auto method = std::make_unique<TraceStones>(setup, std::move(depth).value());
+    auto visibility = build_program("stone_visibility");
+    if (!visibility) return Error{visibility.error()};
+    auto method = std::make_unique<TraceStones>(setup, std::move(depth).value(),
+                                                std::move(visibility).value());
     for (const Stone* kind : kinds) {
         auto added = method->add_kind(*kind, {setup.trace.max_depth, setup.trace_dispersion});
         if (!added) return Error{added.error()};

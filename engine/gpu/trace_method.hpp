@@ -76,8 +76,11 @@ class TraceMethod {
     TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex);
     // The program of `features`, attached to the stone's block when it is first built.
     Result<const Program*> program(std::uint32_t features);
+    // The stone as the rectangle about it, where the visibility pass ran (StoneFrame::visibility).
+    void draw_rectangle(const Program& program, const StoneFrame& frame) const;
     StoneGeometry geometry_;
     ProgramVariants programs_;
+    VertexArray no_attributes_;  // the rectangle's corners come from the vertex index
     bool convex_ = true;
     ExitSearch search_ = ExitSearch::walk;
     double measured_ms_[3] = {};  // walk, constants, folded

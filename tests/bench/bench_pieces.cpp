@@ -14,8 +14,11 @@
 // metal pass and stone passes of a still view's frame, whose metal follows its reflections and
 // whose stones their exits through the piece (metal_sight.glsl, stone_sight.glsl).
 //
-//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--tables FILE.gemdb ...]
-//                [piece.toml ...]
+// The stones are shaded through the visibility pass where the frame allows it (one sample a
+// pixel: FrameSetup::visibility_pass); --facet-by-facet draws them as before it, to compare.
+//
+//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--facet-by-facet]
+//                [--tables FILE.gemdb ...] [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
 //    9 frames each)
 #include <GLES3/gl3.h>
@@ -179,6 +182,7 @@ struct Subject {
 int main(int argc, char** argv) {
     int width = 1920, height = 1080, frames = 9;
     bool exact_fire = false;
+    bool facet_by_facet = false;
     int depth = 8;
     std::vector<std::string> files;
     std::vector<std::shared_ptr<const gem::Database>> databases;
@@ -192,6 +196,8 @@ int main(int argc, char** argv) {
             depth = std::atoi(argv[++i]);
         } else if (a == "--exact-fire") {
             exact_fire = true;
+        } else if (a == "--facet-by-facet") {
+            facet_by_facet = true;
         } else if (a == "--tables" && i + 1 < argc) {
             databases.push_back(
                 std::make_shared<const gem::Database>(must(gem::Database::open(argv[++i]))));
@@ -255,6 +261,7 @@ int main(int argc, char** argv) {
                     std::printf("%s: %s\n", s.file.c_str(), line.c_str());
                 }
             }
+            s.scene->renderer().set_visibility_pass(!facet_by_facet);
             s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
             subjects.push_back(std::move(s));
         }

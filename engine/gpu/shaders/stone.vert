@@ -13,8 +13,23 @@ invariant gl_Position;
 out vec3 v_position;
 flat out uint v_facet;
 
+#ifdef VISIBILITY
+// The rectangle about the stone in normalised device coordinates (x0, y0, x1, y1): two
+// triangles from the vertex index alone, at the near plane (the depth test is off).
+uniform vec4 u_quad;
+
+void main() {
+    const int kCorner[6] = int[6](0, 1, 2, 2, 1, 3);
+    int corner = kCorner[gl_VertexID];
+    v_position = vec3(0.0);
+    v_facet = 0u;
+    gl_Position = vec4((corner & 1) == 0 ? u_quad.x : u_quad.z,
+                       (corner & 2) == 0 ? u_quad.y : u_quad.w, -1.0, 1.0);
+}
+#else
 void main() {
     v_position = a_position;
     v_facet = a_facet;
     gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
+#endif

@@ -15,7 +15,12 @@
 // only exactly (trace_method.cpp asks for it only in a still view's frames).
 in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
-out vec4 o_colour;
+layout(location = 0) out vec4 o_colour;
+#ifdef VISIBILITY
+// Drawn as the rectangle about the stone, under a stencil test that keeps its own pixels: each
+// pixel's entry facet from the visibility pass (stone_visibility.frag).
+uniform mediump usampler2D u_visibility;
+#endif
 
 uniform int u_facet_count;
 uniform float u_ior;
@@ -629,15 +634,25 @@ void main() {
     // The pixel's own ray meets the facet the rasteriser found where its plane is: the entry
     // point as exact as a plane test makes it (the interpolated v_position is a rounding
     // further off, enough to tip a deep path over an edge).
+#ifdef VISIBILITY
+    // The stencil test kept this stone's pixels only.
+    int facet = int(texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r);
+#else
     int facet = int(v_facet);
+#endif
     vec3 origin;
     vec3 direction;
     camera_ray(fragment_ndc(gl_FragCoord), origin, direction);
     vec4 entry_plane = facet_plane(facet);
     vec3 n = entry_plane.xyz;
     float facing = dot(n, direction);
+#ifdef VISIBILITY
+    // The facet the rasteriser found faces the pixel's ray; at a grazing rounding, its plane.
+    vec3 entry = origin + ((entry_plane.w - dot(n, origin)) / min(facing, -1e-6)) * direction;
+#else
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
+#endif
 #ifdef SEES_PIECE
     start_sight();
 #endif
