@@ -113,7 +113,9 @@ inline Renderbuffer make_renderbuffer() {
     glGenRenderbuffers(1, &n);
     return Renderbuffer(n);
 }
-// A 24-bit depth renderbuffer of width × height, multisampled when `samples` > 1.
+// A 24-bit depth renderbuffer of width × height with an 8-bit stencil (the stones' visibility
+// pass, frame_renderer.hpp; no more memory than depth alone where depth is kept in 32 bits),
+// multisampled when `samples` > 1.
 inline Renderbuffer make_depth_renderbuffer(int width, int height, int samples = 1) {
     Renderbuffer depth = make_renderbuffer();
     glBindRenderbuffer(GL_RENDERBUFFER, depth.get());
@@ -125,8 +127,8 @@ inline Renderbuffer make_depth_renderbuffer(int width, int height, int samples =
     }
     return depth;
 }
-// A framebuffer drawing into the 2D texture `colour` and, when given, the renderbuffer
-// `depth`; left bound to GL_FRAMEBUFFER for the caller's completeness check.
+// A framebuffer drawing into the 2D texture `colour` and, when given, the depth and stencil
+// renderbuffer `depth`; left bound to GL_FRAMEBUFFER for the caller's completeness check.
 inline Framebuffer make_framebuffer_with(GLuint colour, GLuint depth = 0) {
     Framebuffer framebuffer = make_framebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());

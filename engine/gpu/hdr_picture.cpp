@@ -65,7 +65,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     const GLenum colour_format = p.high_range_ ? GLenum(GL_RGBA16F) : GLenum(GL_SRGB8_ALPHA8);
 
     const int samples =
-        std::min({options.samples, max_samples(colour_format), max_samples(GL_DEPTH_COMPONENT24)});
+        std::min({options.samples, max_samples(colour_format), max_samples(GL_DEPTH24_STENCIL8)});
     if (samples > 1) {
         p.multisampled_colour_ = make_renderbuffer();
         glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_colour_.get());
@@ -75,7 +75,7 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         glBindFramebuffer(GL_FRAMEBUFFER, p.multisampled_.get());
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
                                   p.multisampled_colour_.get());
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_ATTACHMENT, GL_RENDERBUFFER,
+        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                   p.multisampled_depth_.get());
         if (glGetError() == GL_NO_ERROR && complete()) {
             glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &p.samples_);

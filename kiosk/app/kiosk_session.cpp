@@ -287,9 +287,9 @@ void KioskSession::complete_catalogue(Result<Catalogue> whole, double now_s) {
     for (std::size_t i = before.warnings.size(); i < c.warnings.size(); ++i) {
         log_warning(c.warnings[i]);
     }
-    log_info("catalogue '" + c.name + "': all " + std::to_string(c.stones.size()) +
-             " stones checked" +
-             (c.left_out.empty() ? "" : " (" + std::to_string(c.left_out.size()) + " left out)"));
+    log_info("catalogue '" + c.name + "': every entry checked, " + std::to_string(c.stones.size()) +
+             " to show" +
+             (c.left_out.empty() ? "" : ", " + std::to_string(c.left_out.size()) + " left out"));
     if (!selection_->complete_catalogue(c)) scene_stale_ = true;
     catalogue_ = std::move(whole).value();
 }
