@@ -363,12 +363,18 @@ void TraceMethod::draw_rectangle(const Program& program, const StoneFrame& frame
     glBindTexture(GL_TEXTURE_2D, frame.visibility);
     glActiveTexture(GL_TEXTURE0);
     program.set("u_visibility", kVisibilityUnit);
-    // The stone's corners through the matrix its depth pass drew them with (orthographic: w is
-    // 1), and a pixel more each way.
+    // The stone's corners through the matrix its depth pass drew them with, and a pixel more
+    // each way; the whole picture where a corner lies behind a perspective eye.
     const glm::mat4 vp = stone_view_projection(frame);
-    glm::vec2 lo(1.0f), hi(-1.0f);
+    glm::vec2 lo(std::numeric_limits<float>::infinity());
+    glm::vec2 hi(-std::numeric_limits<float>::infinity());
     for (const glm::dvec3& v : frame.stone->vertices) {
         const glm::vec4 clip = vp * glm::vec4(glm::vec3(v), 1.0f);
+        if (clip.w <= 0.0f) {
+            lo = glm::vec2(-1.0f);
+            hi = glm::vec2(1.0f);
+            break;
+        }
         const glm::vec2 ndc = glm::vec2(clip) / clip.w;
         lo = glm::min(lo, ndc);
         hi = glm::max(hi, ndc);
