@@ -16,6 +16,7 @@
 // --quick: the 1024² views at zoom 1 and 0.25 only, 3 frames (a smoke run).
 // --only: the views whose name contains TEXT (e.g. "zoom 0.62"), to repeat one comparison.
 // --methods: the methods whose name contains TEXT (e.g. "trace depth"), and phong, the base.
+// "by facet": the trace's stones shaded facet by facet, without the visibility pass.
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
@@ -88,6 +89,7 @@ struct Case {
     int depth = kTraceDepth;
     TraceDispersion dispersion = TraceDispersion::none;
     bool triangles = false;  // a non-convex stone's triangles, not its convex pieces
+    bool by_facet = false;   // without the visibility pass (FrameSetup::visibility_pass)
 };
 
 gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const gem::MetalMesh& ring,
@@ -150,6 +152,7 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
     setup.trace_search =
         c.triangles ? gem::gpu::ExitSearch::triangles : gem::gpu::ExitSearch::measured;
     setup.table.blend = c.blend;
+    setup.visibility_pass = !c.by_facet;
     setup.environment = &environment;
     if (v.ring) setup.ring = &ring;
     auto renderer = gem::gpu::FrameRenderer::make(std::move(setup));
@@ -240,6 +243,7 @@ int main(int argc, char** argv) {
         {"table nearest", "table"},
         {"table blend", "table", true},
         {"trace depth 7", "trace"},
+        {"trace depth 7 by facet", "trace", false, kTraceDepth, TraceDispersion::none, false, true},
         {"trace depth 8", "trace", false, kKioskDepth},
         {"trace 7 fire 1st order", "trace", false, kTraceDepth, TraceDispersion::first_order},
         {"trace 7 fire exact", "trace", false, kTraceDepth, TraceDispersion::exact}};
