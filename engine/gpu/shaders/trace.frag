@@ -647,8 +647,10 @@ void main() {
     vec3 n = entry_plane.xyz;
     float facing = dot(n, direction);
 #ifdef VISIBILITY
-    // The facet the rasteriser found faces the pixel's ray; at a grazing rounding, its plane.
-    vec3 entry = origin + ((entry_plane.w - dot(n, origin)) / min(facing, -1e-6)) * direction;
+    // Where the pixel's ray crosses the plane of the facet the visibility pass found nearest
+    // (facing it, but for a rounding at a grazing view, which crosses the plane all the same).
+    float crossing = abs(facing) > 1e-12 ? facing : -1e-12;
+    vec3 entry = origin + ((entry_plane.w - dot(n, origin)) / crossing) * direction;
 #else
     vec3 entry = facing < 0.0 ? origin + ((entry_plane.w - dot(n, origin)) / facing) * direction
                               : v_position;
