@@ -17,7 +17,10 @@
 # the rays through its ring about 197; the halo's about 1,173 ms, of which 938: bench_pieces'
 # still frames' metal and stone passes added to the frames before the stones' rays), each
 # deeper frame's stones dearer in proportion to the depth, so the still frames deepen as
-# gpu/still_schedule.hpp says (16, 32, then 64). Measured 2026-12-06.
+# gpu/still_schedule.hpp says (16, 32, then 64). Measured 2026-12-06; the halo on this machine
+# again that day with its still frames' metal drawn depth first and its stones shaded through
+# the visibility pass (4, 6, 11 and 20 frames where there were 3, 5, 9 and 16; the same
+# reference and gemrender give the earlier counts' figures to the hundredth).
 if (!exists("out")) out = 'docs/images/accuracy'
 $diamond_here << EOD
 2.3 9.15
@@ -32,10 +35,10 @@ $diamond_fast << EOD
 20.0 1.45
 EOD
 $halo_here << EOD
-3.0 6.45
-5.6 5.39
-10.9 4.38
-20.5 3.90
+2.9 5.75
+5.8 5.15
+10.7 4.34
+20.4 3.63
 EOD
 $halo_fast << EOD
 1.9 3.90
