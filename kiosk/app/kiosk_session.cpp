@@ -29,11 +29,17 @@ namespace {
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
 
-// What validation said of a catalogue about to be shown: stones left out, notes, warnings.
-void log_catalogue_lines(const Catalogue& catalogue) {
-    for (const std::string& why : catalogue.left_out) log_error(why);
-    for (const std::string& note : catalogue.notes) log_info(note);
-    for (const std::string& warning : catalogue.warnings) log_warning(warning);
+// What validation said of a catalogue about to be shown: stones left out, notes, warnings;
+// past what it said of `said` (the same catalogue opened for its first stone), which were
+// logged then.
+void log_catalogue_lines(const Catalogue& catalogue, const Catalogue* said = nullptr) {
+    const auto past = [](const std::vector<std::string>& lines, std::size_t logged,
+                         void (*log)(std::string_view)) {
+        for (std::size_t i = logged; i < lines.size(); ++i) log(lines[i]);
+    };
+    past(catalogue.left_out, said ? said->left_out.size() : 0, log_error);
+    past(catalogue.notes, said ? said->notes.size() : 0, log_info);
+    past(catalogue.warnings, said ? said->warnings.size() : 0, log_warning);
 }
 
 }  // namespace
@@ -278,15 +284,8 @@ void KioskSession::complete_catalogue(Result<Catalogue> whole, double now_s) {
     }
     // The same catalogue: what validation said beyond the first stone, and the other stones
     // join the one on screen, whose scene stays.
-    const Catalogue& before = *catalogue_;
-    Catalogue& c = whole.value();
-    for (std::size_t i = before.left_out.size(); i < c.left_out.size(); ++i) {
-        log_error(c.left_out[i]);
-    }
-    for (std::size_t i = before.notes.size(); i < c.notes.size(); ++i) log_info(c.notes[i]);
-    for (std::size_t i = before.warnings.size(); i < c.warnings.size(); ++i) {
-        log_warning(c.warnings[i]);
-    }
+    const Catalogue& c = whole.value();
+    log_catalogue_lines(c, &*catalogue_);
     log_info("catalogue '" + c.name + "': every entry checked, " + std::to_string(c.stones.size()) +
              " to show" +
              (c.left_out.empty() ? "" : ", " + std::to_string(c.left_out.size()) + " left out"));
