@@ -48,12 +48,32 @@ inline PixelRect clamped(const PixelRect& r, int width, int height) {
 // floor(x_lo − 0.5) to floor(x_hi + 0.5). It is affected when that range meets [a, b):
 // (j + 0.5) · scale + reach_hi + 0.5 ≥ a and (j + 0.5) · scale + reach_lo − 0.5 < b. One texel
 // more on each side keeps float rounding in the shaders' own coordinates on the safe side.
-inline void affected_side(int a, int b, double scale, double reach_lo, double reach_hi, int size,
-                          int& lo, int& hi) {
+inline void affected_side(int a, int b, double scale, double reach_lo, double reach_hi, int& lo,
+                          int& hi) {
     lo = static_cast<int>(std::ceil((a - reach_hi - 0.5) / scale - 0.5)) - 1;
     hi = static_cast<int>(std::ceil((b - reach_lo + 0.5) / scale - 0.5)) + 1;
-    lo = std::clamp(lo, 0, size);
-    hi = std::clamp(hi, 0, size);
+}
+
+// The other way round: the input texels [lo, hi) that output texels [a, b) read, for the same
+// pass (output texel j reads input texels floor(x_lo − 0.5) to floor(x_hi + 0.5)), one texel
+// more on each side as above.
+inline void read_side(int a, int b, double scale, double reach_lo, double reach_hi, int& lo,
+                      int& hi) {
+    lo = static_cast<int>(std::floor((a + 0.5) * scale + reach_lo - 0.5)) - 1;
+    hi = static_cast<int>(std::floor((b - 0.5) * scale + reach_hi + 0.5)) + 2;
+}
+
+// `side` (affected_side or read_side) along x and y, clamped to [0, size).
+template <class Side>
+PixelRect sides(const PixelRect& from, glm::dvec2 scale, double reach_lo, double reach_hi,
+                glm::ivec2 size, Side side) {
+    if (from.empty()) return {};
+    PixelRect r;
+    side(from.x0, from.x1, scale.x, reach_lo, reach_hi, r.x0, r.x1);
+    side(from.y0, from.y1, scale.y, reach_lo, reach_hi, r.y0, r.y1);
+    r = {std::clamp(r.x0, 0, size.x), std::clamp(r.y0, 0, size.y), std::clamp(r.x1, 0, size.x),
+         std::clamp(r.y1, 0, size.y)};
+    return r.empty() ? PixelRect{} : r;
 }
 
 // The texels of an output of `size` that read anything in `input` (in input texels), for a
@@ -61,33 +81,14 @@ inline void affected_side(int a, int b, double scale, double reach_lo, double re
 // `reach_hi` input texels about the centre, bilinear.
 inline PixelRect affected_by(const PixelRect& input, glm::dvec2 scale, double reach_lo,
                              double reach_hi, glm::ivec2 size) {
-    if (input.empty()) return {};
-    PixelRect out;
-    affected_side(input.x0, input.x1, scale.x, reach_lo, reach_hi, size.x, out.x0, out.x1);
-    affected_side(input.y0, input.y1, scale.y, reach_lo, reach_hi, size.y, out.y0, out.y1);
-    return out.empty() ? PixelRect{} : out;
-}
-
-// The other way round: the input texels [lo, hi) that output texels [a, b) read, for the same
-// pass (output texel j reads input texels floor(x_lo − 0.5) to floor(x_hi + 0.5)), one texel
-// more on each side as above.
-inline void read_side(int a, int b, double scale, double reach_lo, double reach_hi, int size,
-                      int& lo, int& hi) {
-    lo = static_cast<int>(std::floor((a + 0.5) * scale + reach_lo - 0.5)) - 1;
-    hi = static_cast<int>(std::floor((b - 0.5) * scale + reach_hi + 0.5)) + 2;
-    lo = std::clamp(lo, 0, size);
-    hi = std::clamp(hi, 0, size);
+    return sides(input, scale, reach_lo, reach_hi, size, affected_side);
 }
 
 // The texels of an input of `size` that the output texels in `output` read, for a pass as
 // affected_by()'s: where the input must hold this frame's values before the pass runs there.
 inline PixelRect read_by(const PixelRect& output, glm::dvec2 scale, double reach_lo,
                          double reach_hi, glm::ivec2 size) {
-    if (output.empty()) return {};
-    PixelRect in;
-    read_side(output.x0, output.x1, scale.x, reach_lo, reach_hi, size.x, in.x0, in.x1);
-    read_side(output.y0, output.y1, scale.y, reach_lo, reach_hi, size.y, in.y0, in.y1);
-    return in.empty() ? PixelRect{} : in;
+    return sides(output, scale, reach_lo, reach_hi, size, read_side);
 }
 
 // What a surface holds apart from the flat background it was cleared to, so that a frame
