@@ -125,6 +125,29 @@ struct PassCosts {
     double finishing() const { return resolve + glare + tone + present; }
 };
 
+// One frame of `view` through `hdr` as the kiosk draws it: begun (`still` or moving), moved by
+// the picture's jitter, bound around the piece (the studio's background is one colour all
+// round the turn) and cleared to the kiosk's surround, drawn (a still frame traced as one
+// where `as_still`, else as a moving frame) and finished into `picture`.
+gem::gpu::FrameStats draw_view(gem::gpu::FrameRenderer& renderer,
+                               const gem::kiosk::Framing& framing,
+                               const gem::kiosk::ViewState& view, bool still, bool as_still,
+                               gem::gpu::HdrPicture& hdr, const gem::gpu::RenderTarget& picture,
+                               gem::gpu::FrameWait wait, gem::gpu::FinishTimes* times = nullptr) {
+    hdr.begin_frame(still);
+    auto cs = gem::kiosk::framed_camera(view, framing);
+    cs.shift += hdr.jitter_ndc();
+    const auto camera =
+        must(gem::Camera::make(cs, renderer.scene_radius_mm(), picture.width(), picture.height()));
+    hdr.bind(renderer.cover(camera));
+    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
+    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+    const gem::gpu::FrameStats drawn =
+        must(renderer.render(camera, wait, as_still ? hdr.still_frame() : gem::gpu::StillFrame{}));
+    must(hdr.finish(picture, times));
+    return drawn;
+}
+
 PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
                       double zoom, int samples, double glare, int frames,
                       const gem::gpu::RenderTarget& picture, const gem::kiosk::PresentPass& pass,
@@ -137,19 +160,10 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         view.zoom = zoom;
         // Odd frames still (the running mean's pass), even ones turned.
         view.azimuth_deg += (f / 2) * 1.0;
-        hdr.begin_frame(f % 2 == 1);
-        auto cs = gem::kiosk::framed_camera(view, framing);
-        cs.shift += hdr.jitter_ndc();
-        const auto camera = must(gem::Camera::make(cs, renderer.scene_radius_mm(), w, h));
-        // Around the piece (the studio's background is one colour all round the turn), as
-        // the kiosk draws it.
-        hdr.bind(renderer.cover(camera));
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        const gem::gpu::FrameStats drawn =
-            must(renderer.render(camera, gem::gpu::FrameWait::passes));
         gem::gpu::FinishTimes t;
-        must(hdr.finish(picture, &t));
+        // Its still frames traced as moving ones: what the running mean's pass adds is timed.
+        const gem::gpu::FrameStats drawn = draw_view(renderer, framing, view, f % 2 == 1, false,
+                                                     hdr, picture, gem::gpu::FrameWait::passes, &t);
         const double present_ms = time_present(pass, picture, screen, hdr.target_region());
         if (f < 0) continue;
         scene.push_back(drawn.cpu_ms);
@@ -414,17 +428,9 @@ gem::Image start_view(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
                       double& rewritten) {
     const int w = picture.width(), h = picture.height();
     for (int f = 0; f < std::max(still, 1) + 1; ++f) {
-        hdr.begin_frame(f > 1);
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         if (f == 0) view.azimuth_deg += 1.0;
-        auto cs = gem::kiosk::framed_camera(view, framing);
-        cs.shift += hdr.jitter_ndc();
-        const auto camera = must(gem::Camera::make(cs, renderer.scene_radius_mm(), w, h));
-        hdr.bind(renderer.cover(camera));
-        glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-        glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-        must(renderer.render(camera, gem::gpu::FrameWait::frame, hdr.still_frame()));
-        must(hdr.finish(picture));
+        draw_view(renderer, framing, view, f > 1, true, hdr, picture, gem::gpu::FrameWait::frame);
         rewritten = static_cast<double>(hdr.target_region().area()) / (double(w) * h);
     }
     return picture.read();
