@@ -61,18 +61,11 @@ Result<gpu::FrameRenderer> make_renderer(const Piece* piece, const Stone* loose,
                                          const Environment& studio, gpu::ExitSearch search,
                                          gpu::TraceDispersion fire = gpu::TraceDispersion::none) {
     const RenderSettings s = settings();
-    gpu::FrameSetup setup;
-    setup.method = "trace";
-    setup.piece = piece;
-    if (loose != nullptr) {
-        setup.stone = *loose;
-        setup.material = loose->material;
-    }
+    gpu::FrameSetup setup = gpu_test::trace_setup(piece, loose, studio);
     setup.shading = s.shading;
     setup.trace = s.trace;
     setup.trace_search = search;
     setup.trace_dispersion = fire;
-    setup.environment = &studio;
     setup.cube_face = 128;
     return gpu::FrameRenderer::make(std::move(setup));
 }

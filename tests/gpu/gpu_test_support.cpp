@@ -52,6 +52,19 @@ Image difference_image(const Image& a, const Image& b, float gain) {
     return out;
 }
 
+gpu::FrameSetup trace_setup(const Piece* piece, const Stone* loose,
+                            const Environment& environment) {
+    gpu::FrameSetup setup;
+    setup.method = "trace";
+    setup.piece = piece;
+    if (loose != nullptr) {
+        setup.stone = *loose;
+        setup.material = loose->material;
+    }
+    setup.environment = &environment;
+    return setup;
+}
+
 Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames,
                                    const StillSpectrum* spectrum, bool moving) {
     const int w = camera.width(), h = camera.height();

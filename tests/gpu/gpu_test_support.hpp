@@ -37,4 +37,8 @@ Image difference_image(const Image& a, const Image& b, float gain = 4.0f);
 Result<Image> mean_of_still_frames(gpu::FrameRenderer& renderer, const Camera& camera, int frames,
                                    const StillSpectrum* spectrum = nullptr, bool moving = false);
 
+// The trace of `piece` (or the `loose` stone, its material its own) in `environment`, which
+// must outlive the renderer made from it; the rest of the setup is the caller's.
+gpu::FrameSetup trace_setup(const Piece* piece, const Stone* loose, const Environment& environment);
+
 }  // namespace gem::gpu_test

@@ -29,18 +29,11 @@ constexpr int kWidth = 160, kHeight = 120;
 
 Result<gpu::FrameRenderer> make_renderer(const Piece* piece, const Stone* loose,
                                          const Environment& studio) {
-    gpu::FrameSetup setup;
-    setup.method = "trace";
-    setup.piece = piece;
-    if (loose != nullptr) {
-        setup.stone = *loose;
-        setup.material = loose->material;
-    }
+    gpu::FrameSetup setup = gpu_test::trace_setup(piece, loose, studio);
     setup.shading.lights = {{{20.0, 60.0, 40.0}, false, {2.0, 2.0, 2.0}}};
     setup.trace.max_depth = 6;
     // Both pictures of a pair from one renderer, so the same search and programs draw them.
     setup.trace_search = gpu::ExitSearch::constants;
-    setup.environment = &studio;
     setup.cube_face = 64;
     return gpu::FrameRenderer::make(std::move(setup));
 }
