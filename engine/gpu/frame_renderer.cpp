@@ -98,7 +98,10 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         r.frames_.push_back(std::move(frame));
         r.kinds_.push_back(0);
     }
-    for (StoneFrame& frame : r.frames_) frame.shading = s.shading;
+    for (std::size_t i = 0; i < r.frames_.size(); ++i) {
+        r.frames_[i].shading = s.shading;
+        r.frames_[i].stone_id = static_cast<std::uint32_t>(i + 1);  // the visibility pass's
+    }
     r.kind_count_ = kinds.size();
     auto method = entry->make(s, kinds);
     if (!method) return Error{method.error()};
@@ -318,10 +321,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // shader runs on whole blocks of pixels, and drawn facet by facet a block ran once per
     // facet triangle it met (bench_pieces: 1.6 facets a block for the halo's stones).
     const GLuint visibility = attach_visibility(camera);
-    for (std::size_t i = 0; i < frames_.size(); ++i) {
-        frames_[i].visibility = visibility;
-        frames_[i].stone_id = static_cast<std::uint32_t>(i + 1);
-    }
+    for (StoneFrame& frame : frames_) frame.visibility = visibility;
     if (visibility != 0) {
         const GLenum ids[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
         glDrawBuffers(2, ids);
