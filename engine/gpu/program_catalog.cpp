@@ -41,7 +41,7 @@ std::vector<ProgramSpec> all_program_specs() {
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The stones' depth with each pixel's stone and entry facet (frame_renderer.hpp).
-        {"stone_visibility", {"stone.vert"}, {"stone_visibility.frag"}, {}},
+        {"stone_visibility", {"stone.vert"}, {"stone_visibility.frag"}, {"VISIBILITY_PASS"}},
         // The metal's depth alone (RingRenderer::draw), before it is shaded where it is seen.
         {"ring_depth", {"ring.vert"}, {"stone_depth.frag"}, {}},
         // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).

@@ -12,6 +12,13 @@ invariant gl_Position;
 
 out vec3 v_position;
 flat out uint v_facet;
+#ifdef VISIBILITY_PASS
+// The facet again, as a float (exact to 2^24), for stone_visibility.frag's integer target: the
+// integer varying written straight to it came out 0 at every pixel on llvmpipe under QEMU's
+// emulated CPU (tcg, -cpu max: the VM test's machine where there is no KVM; reproduced with
+// qemu-x86_64 -cpu max, not with -cpu Haswell or the host's own CPU).
+flat out float v_facet_number;
+#endif
 
 #ifdef VISIBILITY
 // The rectangle about the stone in normalised device coordinates (x0, y0, x1, y1): two
@@ -30,6 +37,9 @@ void main() {
 void main() {
     v_position = a_position;
     v_facet = a_facet;
+#ifdef VISIBILITY_PASS
+    v_facet_number = float(a_facet);
+#endif
     gl_Position = u_view_projection * vec4(a_position, 1.0);
 }
 #endif

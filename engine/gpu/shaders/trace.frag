@@ -635,8 +635,11 @@ void main() {
     // point as exact as a plane test makes it (the interpolated v_position is a rounding
     // further off, enough to tip a deep path over an edge).
 #ifdef VISIBILITY
-    // The stencil test kept this stone's pixels only.
-    int facet = int(texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r);
+    // The stencil test kept this stone's pixels only; a block's other pixels still run (their
+    // values feed its derivatives) and may read another stone's facet or none: held to this
+    // stone's facets, so that no index runs past its arrays.
+    int facet =
+        min(int(texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r), u_facet_count - 1);
 #else
     int facet = int(v_facet);
 #endif
