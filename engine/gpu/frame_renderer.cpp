@@ -321,6 +321,15 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // shader runs on whole blocks of pixels, and drawn facet by facet a block ran once per
     // facet triangle it met (bench_pieces: 1.6 facets a block for the halo's stones).
     const GLuint visibility = attach_visibility(camera);
+    // The stencil test the visibility pass turns on is off again however the stones' passes
+    // end, and a frame copied from these (a stone drawn alone) is drawn facet by facet.
+    struct VisibilityEnd {
+        std::vector<StoneFrame>& frames;
+        ~VisibilityEnd() {
+            for (StoneFrame& frame : frames) frame.visibility = 0;
+            glDisable(GL_STENCIL_TEST);
+        }
+    } visibility_end{frames_};
     for (StoneFrame& frame : frames_) frame.visibility = visibility;
     if (visibility != 0) {
         const GLenum ids[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
@@ -333,28 +342,20 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         const GLenum scene_only[] = {GL_COLOR_ATTACHMENT0};
         glDrawBuffers(1, scene_only);
         glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+        glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         stats.stones_by_visibility = true;
     }
-    if (!depth) {
-        glDisable(GL_STENCIL_TEST);
-        return Error{depth.error()};
-    }
+    if (!depth) return Error{depth.error()};
     passed(stats.stone_depth_ms);
     if (ring_) {
         ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, still.index);
-        if (!ok) {
-            glDisable(GL_STENCIL_TEST);
-            return Error{ok.error()};
-        }
+        if (!ok) return Error{ok.error()};
         passed(stats.metal_ms);
     }
     const auto submit_start = Clock::now();
     ok = method_->draw(frames_, kinds_, stats);
-    // A frame copied from these (a stone drawn alone) is drawn facet by facet.
-    for (StoneFrame& frame : frames_) frame.visibility = 0;
-    glDisable(GL_STENCIL_TEST);
     if (!ok) return Error{ok.error()};
     stats.stone_submit_ms = ms_since(submit_start);
     passed(stats.stone_ms);

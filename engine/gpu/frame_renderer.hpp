@@ -41,10 +41,10 @@ class FrameRenderer {
     // New lights re-render the ring's cube faces (its metal reflects them).
     Result<bool> set_lights(const std::vector<Light>& lights);
 
-    // Before a frame: what the stone method needs for `camera`, the view turning at `omega`
-    // (StoneMethod::prepare: the table's views decoded ahead of the turn).
     // FrameSetup::visibility_pass, changed between frames (to measure the stones both ways).
     void set_visibility_pass(bool on) { setup_.visibility_pass = on; }
+    // Before a frame: what the stone method needs for `camera`, the view turning at `omega`
+    // (StoneMethod::prepare: the table's views decoded ahead of the turn).
     void prepare(const Camera& camera, const glm::dvec3& omega, bool wait = false) {
         method_->prepare(camera, omega, wait);
     }
@@ -92,9 +92,10 @@ class FrameRenderer {
     void set_sight(StoneFrame& frame, std::size_t i) const;
     // The background's one colour through `camera`, where it is one.
     std::optional<glm::vec3> flat_background(const Camera& camera) const;
-    // The visibility target attached to the bound framebuffer as its second colour, cleared,
-    // where this frame can use it (the method shades by it, one sample a pixel, a framebuffer
-    // object of the camera's size): its texture, else 0.
+    // The visibility target attached to the bound framebuffer as its second colour (not
+    // cleared: read only where the stencil says it was written this frame), where this frame
+    // can use it (the method shades by it, one sample a pixel, a framebuffer object, at most
+    // 255 stones for an 8-bit stencil): its texture, else 0.
     GLuint attach_visibility(const Camera& camera);
 
     FrameSetup setup_;
@@ -119,7 +120,7 @@ class FrameRenderer {
     std::string sight_note_;
     std::unique_ptr<StoneMethod> method_;
     std::unique_ptr<RingRenderer> ring_;
-    Texture visibility_;  // R32UI: each pixel's stone and entry facet (StoneFrame::visibility)
+    Texture visibility_;  // R16UI: each pixel's entry facet (StoneFrame::visibility)
     glm::ivec2 visibility_size_{0};
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
