@@ -85,6 +85,9 @@ struct FrameStats {
     // stones one call each costs beyond their pixels.
     double stone_submit_ms = 0.0;
     TableFrameStats table;
+    // A table showed a stand-in for a view not yet resident (TableFrameStats::complete), or
+    // nothing yet: the same view drawn again looks better.
+    bool stand_in = false;
 };
 
 }  // namespace gem::gpu

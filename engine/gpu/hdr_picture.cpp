@@ -131,11 +131,13 @@ void HdrPicture::begin_frame(bool still, double now_s) {
         return;
     }
     band_ = 0;
+    still_and_whole_ = still && drawn_whole_;
     schedule_.begin_frame(still && accumulate_.has_value(), now_s);
     bands_.start(accumulating() ? schedule_.bands() : 1);
 }
 
-void HdrPicture::frame_drawn(double ms) {
+void HdrPicture::frame_drawn(double ms, bool stand_in) {
+    drawn_whole_ = !stand_in;
     bands_.measured(band_, ms);
     // A frame in bands is judged by its dearest band, what a touch waits for.
     if (band_ + 1 >= bands_.bands()) schedule_.frame_drawn(bands_.dearest_ms() * bands_.bands());
@@ -161,7 +163,7 @@ StillFrame HdrPicture::still_frame() const {
 }
 
 bool HdrPicture::settled() const {
-    return accumulate_ && schedule_.settled();
+    return accumulate_ ? schedule_.settled() : still_and_whole_;
 }
 
 int HdrPicture::still_frames_drawn() const {

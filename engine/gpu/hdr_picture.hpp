@@ -15,6 +15,8 @@
 // are sampled several times a pixel as the CPU reference samples them; after its first they
 // are drawn without MSAA (point samples, multisampled_frame()). Any motion restarts the mean;
 // after `still_frames` frames, or `still_seconds`, more drawing changes nothing (settled()).
+// Without a mean (still_frames 1), a still view is settled once it has been drawn whole, no
+// stand-in among its views (FrameStats::stand_in): the picture on screen is all it gets.
 //
 // With spectral fire (PictureOptions::spectral) each still frame also traces its own
 // wavelengths, one per colour channel (still_frame(), optics/spectrum.hpp: StillSpectrum), so
@@ -92,20 +94,24 @@ class HdrPicture {
     // begins (a still view's time is counted from its first frame; any clock). The camera of
     // the frame should be moved by jitter_ndc() (CameraSettings::shift).
     void begin_frame(bool still, double now_s = 0.0);
-    // After drawing it: what it cost (ms), by which a still view's next frame is judged.
-    void frame_drawn(double ms);
+    // After drawing it: what it cost (ms), by which a still view's next frame is judged, and
+    // whether it showed a stand-in for a view not yet resident (FrameStats::stand_in).
+    void frame_drawn(double ms, bool stand_in = false);
     glm::dvec2 jitter_ndc() const;
     // What this frame traces differently (FrameRenderer::render): a still frame's wavelengths,
     // when the picture is spectral, and its depth; a moving frame's defaults else.
     StillFrame still_frame() const;
-    // The still view has its frames, or its time: drawing it again changes nothing.
+    // The still view has its frames, or its time, or (without a mean) a whole frame: drawing it
+    // again changes nothing.
     bool settled() const;
     // The frames the still view's mean holds once this frame is drawn (0 while moving).
     int still_frames_drawn() const;
     // How this still view was refined: its time, its depths.
     const StillSchedule& still_schedule() const { return schedule_; }
+    // A still view's frames are averaged (still_frames > 1).
+    bool averages() const { return accumulate_.has_value(); }
     // The picture is as good as this view gets: settled, or no averaging at all.
-    bool refined() const { return !accumulate_ || settled(); }
+    bool refined() const { return !averages() || settled(); }
     // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, for
     // a frame whose scene covers `cover` (FrameRenderer::cover(); nullopt: anything). The
     // scene is drawn whole (its clear is cheapest so); finish() runs around the cover.
@@ -171,9 +177,11 @@ class HdrPicture {
     bool mean_high_precision_ = false;
     GLenum mean_format() const { return mean_high_precision_ ? GL_RGBA32F : GL_RGBA16F; }
     Framebuffer mean_framebuffer_;
-    StillSchedule schedule_;  // this frame's place in the still view's mean, and its depth
-    int band_ = 0;            // the band of its still frame this frame draws
-    StillBands bands_;        // where that still frame's bands lie, and what they cost
+    StillSchedule schedule_;        // this frame's place in the still view's mean, and its depth
+    int band_ = 0;                  // the band of its still frame this frame draws
+    bool drawn_whole_ = false;      // without a mean: the last frame drawn showed no stand-in
+    bool still_and_whole_ = false;  // ... and this frame's view is that one's (settled())
+    StillBands bands_;              // where that still frame's bands lie, and what they cost
     std::optional<StillSpectrum> spectrum_;
     std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;

@@ -61,6 +61,7 @@ class PieceTables final : public StoneMethod {
         TableFrameStats sum;
         sum.drawn = true;
         sum.exact = true;
+        sum.complete = true;
         for (std::size_t i = 0; i < frames.size(); ++i) {
             TableMethod* table = tables_[kinds[i]].get();
             if (table == nullptr) continue;
@@ -73,11 +74,13 @@ class PieceTables final : public StoneMethod {
             sum.uploads += one.uploads;
             sum.level = std::max(sum.level, one.level);
             sum.exact = sum.exact && one.exact;
+            sum.complete = sum.complete && one.complete;
             sum.drawn = sum.drawn && one.drawn;
             sum.angle_rad = std::max(sum.angle_rad, one.angle_rad);
             sum.views += one.views;
         }
         stats.table = sum;
+        stats.stand_in = !sum.complete;
         return true;
     }
 

@@ -207,6 +207,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     }
     stats.level = first.level;
     stats.exact = first.exact;
+    stats.complete = first.exact && (blend >= 1.0 || (second.view && second.exact));
     stats.angle_rad = first.match.angle;
     if (!first.view) {
         if (stats_out != nullptr) *stats_out = stats;
@@ -302,6 +303,7 @@ class TableStones final : public StoneMethod {
         for (const StoneFrame& frame : frames) {
             auto ok = table_.draw(frame, &stats.table);
             if (!ok) return ok;
+            stats.stand_in = stats.stand_in || !stats.table.complete;
         }
         return true;
     }

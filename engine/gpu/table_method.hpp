@@ -43,6 +43,9 @@ struct TableFrameStats {
     std::uint32_t uploads = 0;
     std::uint32_t level = 0;  // level shown by the nearest view
     bool exact = false;       // the nearest stored view at the wanted level was shown
+    // Every view the frame asked for was shown at its level (the nearest and, in a blend, the
+    // second): the same view drawn again looks the same.
+    bool complete = false;
     bool drawn = false;       // false when nothing was resident yet (cold start)
     double angle_rad = 0.0;   // between the asked direction and the nearest view's image
     std::uint32_t views = 0;  // stored views shaded: 1, or 2 in a blend

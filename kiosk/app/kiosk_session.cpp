@@ -552,6 +552,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     record.probing = probe_ != nullptr;
     record.still = scene_picture_->still_frame().index;
     last_frame_start_s_ = record.start_s;
+    bool stand_in = false;  // a view not yet resident was stood in for (FrameStats::stand_in)
     if (redraw) {
         glm::dvec3 omega(0.0);
         std::optional<Camera> camera;
@@ -566,6 +567,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         if (const auto& stats = drawn.value().stats) {
             const gpu::TableFrameStats& t = stats->table;
             record.streaming_ms = t.acquire_ms + t.upload_ms + t.wait_ms;
+            stand_in = stats->stand_in;
         }
         auto faded = crossfade_->draw(*picture_, now_s);
         if (!faded) return Error{faded.error()};
@@ -595,7 +597,9 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         return std::optional<FrameRecord>(record);
     }
     record.draw_ms = (done_s - record.start_s) * 1000.0;
-    scene_picture_->frame_drawn(record.draw_ms);  // what the next still frame is judged by
+    // What the next still frame is judged by; and without a mean, whether a still view needs
+    // drawing again.
+    scene_picture_->frame_drawn(record.draw_ms, stand_in);
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
     if (oldest_unshown_input_s_ >= 0.0) {
         record.latency_ms = (done_s - oldest_unshown_input_s_) * 1000.0;
@@ -643,7 +647,8 @@ void KioskSession::log_still_view_settled() {
         still_view_logged_ = false;
         return;
     }
-    if (still_view_logged_) return;
+    // Without a mean a still view is its one frame: nothing was refined to say.
+    if (still_view_logged_ || !scene_picture_->averages()) return;
     still_view_logged_ = true;
     const gpu::StillSchedule& s = scene_picture_->still_schedule();
     char line[160];

@@ -336,5 +336,37 @@ TEST(GpuPicture, AStillViewDeepensAsItsFramesAccumulateAndEndsWhenItsTimeIsUp) {
     EXPECT_EQ(hdr.still_frames_drawn(), 0);
 }
 
+// Without a mean a still view is its one frame: once a frame of the view was drawn whole, the
+// kiosk need not draw it again (it did, at the display's rate, for as long as nobody touched
+// it); a frame with a stand-in for a view not yet resident is drawn again until one is not.
+TEST(GpuPicture, WithoutAMeanAStillViewSettlesOnceItIsDrawnWhole) {
+    auto ctx = gpu_test::context();
+    ASSERT_TRUE(ctx.ok()) << ctx.error();
+    gpu::PictureOptions options;
+    options.samples = 1;
+    options.glare = 0.0;
+    options.still_frames = 1;
+    auto made = gpu::HdrPicture::make(8, 8, options);
+    ASSERT_TRUE(made.ok()) << made.error();
+    gpu::HdrPicture& hdr = made.value();
+    EXPECT_FALSE(hdr.averages());
+    hdr.begin_frame(false, 0.0);
+    EXPECT_FALSE(hdr.settled()) << "a moving view";
+    hdr.frame_drawn(5.0, /*stand_in=*/true);
+    hdr.begin_frame(true, 0.1);
+    EXPECT_FALSE(hdr.settled()) << "its last frame stood in for a view";
+    hdr.frame_drawn(5.0, false);
+    for (int f = 0; f < 3; ++f) {
+        hdr.begin_frame(true, 0.2 + 0.1 * f);
+        EXPECT_TRUE(hdr.settled()) << "drawn whole, still: frame " << f;
+        EXPECT_TRUE(hdr.refined());
+    }
+    hdr.begin_frame(false, 0.6);  // a touch
+    EXPECT_FALSE(hdr.settled());
+    hdr.frame_drawn(5.0, false);
+    hdr.begin_frame(true, 0.7);
+    EXPECT_TRUE(hdr.settled()) << "the moving view's last frame, drawn whole, is the still view";
+}
+
 }  // namespace
 }  // namespace gem
