@@ -65,6 +65,7 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
     }
     FrameRenderer r;
     r.method_entry_ = entry;
+    r.visibility_ = std::make_unique<VisibilityTarget>();
     r.check_label_ = "frame (" + setup.method + ")";
     r.setup_ = std::move(setup);
     const FrameSetup& s = r.setup_;
@@ -246,30 +247,12 @@ std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
     return SceneCover{clamped(rect, camera.width(), camera.height()), *background};
 }
 
-GLuint FrameRenderer::attach_visibility(const Camera& camera) {
-    if (!setup_.visibility_pass || !method_->shades_by_visibility()) return 0;
-    GLint framebuffer = 0, samples = 0, stencil = 0;
-    glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_SAMPLES, &samples);
+VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera) {
+    if (!setup_.visibility_pass || !method_->shades_by_visibility()) return {};
+    GLint stencil = 0;
     glGetIntegerv(GL_STENCIL_BITS, &stencil);
-    if (stencil < 8 || frames_.size() > 255) return 0;
-    // The default framebuffer takes no attachment; a multisampled one no single-sample one
-    // (and an integer target no samples in OpenGL ES 3.0): those frames go facet by facet.
-    if (framebuffer == 0 || samples > 0) return 0;
-    const glm::ivec2 size(camera.width(), camera.height());
-    if (!visibility_ || visibility_size_ != size) {
-        visibility_ = make_texture_2d(GL_R16UI, size.x, size.y, GL_NEAREST);
-        visibility_size_ = size;
-    }
-    glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D,
-                           visibility_.get(), 0);
-    if (glCheckFramebufferStatus(GL_DRAW_FRAMEBUFFER) != GL_FRAMEBUFFER_COMPLETE) {
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
-        return 0;
-    }
-    // Not cleared: the stones' pass reads it only where the stencil holds that stone, which the
-    // visibility pass wrote beside its facet this frame.
-    return visibility_.get();
+    if (stencil < 8 || frames_.size() > 255) return {};
+    return visibility_->attach(glm::ivec2(camera.width(), camera.height()));
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
@@ -320,28 +303,47 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // so that each stone is then shaded as one rectangle under a stencil test: a fragment
     // shader runs on whole blocks of pixels, and drawn facet by facet a block ran once per
     // facet triangle it met (bench_pieces: 1.6 facets a block for the halo's stones).
-    const GLuint visibility = attach_visibility(camera);
-    // The stencil test the visibility pass turns on is off again however the stones' passes
-    // end, and a frame copied from these (a stone drawn alone) is drawn facet by facet.
+    // In a multisampled frame each sample holds its stone and facet, and each stone's pixel
+    // traces each facet its samples show once, weighed by them (trace.frag).
+    const VisibilityAttachment visibility = attach_visibility(camera);
+    // The target is off the framebuffer again, and the stencil test the visibility pass turns
+    // on off, however the stones' passes end; a frame copied from these (a stone drawn alone)
+    // is drawn facet by facet.
     struct VisibilityEnd {
         std::vector<StoneFrame>& frames;
+        const VisibilityTarget& target;
+        bool attached;
+        // Read by the stones' pass, so no longer drawn into.
+        void detach() {
+            if (!attached) return;
+            const GLenum scene_only[] = {GL_COLOR_ATTACHMENT0};
+            glDrawBuffers(1, scene_only);
+            target.detach();
+            attached = false;
+        }
         ~VisibilityEnd() {
-            for (StoneFrame& frame : frames) frame.visibility = 0;
+            detach();
+            for (StoneFrame& frame : frames) frame.visibility = {};
             glDisable(GL_STENCIL_TEST);
         }
-    } visibility_end{frames_};
+    } visibility_end{frames_, *visibility_, visibility.texture != 0};
     for (StoneFrame& frame : frames_) frame.visibility = visibility;
-    if (visibility != 0) {
+    if (visibility.texture != 0) {
         const GLenum ids[] = {GL_NONE, GL_COLOR_ATTACHMENT1};
         glDrawBuffers(2, ids);
     }
     auto depth = method_->draw_depth(frames_, kinds_);
-    if (visibility != 0) {
-        // Read by the stones' pass, so no longer drawn into; the metal in front of a stone
-        // takes its stencil back.
-        const GLenum scene_only[] = {GL_COLOR_ATTACHMENT0};
-        glDrawBuffers(1, scene_only);
-        glFramebufferTexture2D(GL_DRAW_FRAMEBUFFER, GL_COLOR_ATTACHMENT1, GL_TEXTURE_2D, 0, 0);
+    // The metal in front of a stone takes its stencil back; in a multisampled frame it also
+    // writes no stone into the target at the samples it takes (the stones' pass, which reads a
+    // pixel's samples there, cannot read the stencil).
+    const bool metal_marks = visibility.samples > 0 && ring_ != nullptr;
+    if (visibility.texture != 0) {
+        if (metal_marks) {
+            const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
+            glDrawBuffers(2, both);
+        } else {
+            visibility_end.detach();
+        }
         glEnable(GL_STENCIL_TEST);
         glStencilFunc(GL_ALWAYS, 0, 0xff);
         glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
@@ -350,7 +352,8 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     if (!depth) return Error{depth.error()};
     passed(stats.stone_depth_ms);
     if (ring_) {
-        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, still.index);
+        ok = ring_->draw(camera, scene_radius_mm_, setup_.shading, still.index, metal_marks);
+        visibility_end.detach();
         if (!ok) return Error{ok.error()};
         passed(stats.metal_ms);
     }

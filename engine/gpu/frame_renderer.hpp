@@ -17,6 +17,7 @@
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/scene_cover.hpp"
 #include "gpu/stone_method.hpp"
+#include "gpu/visibility_target.hpp"
 #include "piece/metal_mesh.hpp"
 #include "piece/piece.hpp"
 #include "render/environment.hpp"
@@ -81,6 +82,8 @@ class FrameRenderer {
     // Why a still view's metal and stones do not see their own piece (piece_path.glsl), where
     // they cannot; empty where they do, or there is no metal.
     const std::string& sight_note() const { return sight_note_; }
+    // Why a multisampled frame's stones are shaded facet by facet; empty where they are not.
+    const std::string& visibility_note() const { return visibility_->note(); }
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }
@@ -92,11 +95,10 @@ class FrameRenderer {
     void set_sight(StoneFrame& frame, std::size_t i) const;
     // The background's one colour through `camera`, where it is one.
     std::optional<glm::vec3> flat_background(const Camera& camera) const;
-    // The visibility target attached to the bound framebuffer as its second colour (not
-    // cleared: read only where the stencil says it was written this frame), where this frame
-    // can use it (the method shades by it, one sample a pixel, a framebuffer object, at most
-    // 255 stones for an 8-bit stencil): its texture, else 0.
-    GLuint attach_visibility(const Camera& camera);
+    // The visibility target attached to the bound framebuffer as its second colour, where
+    // this frame can use it (the method shades by it, a framebuffer object, at most 255 stones
+    // for an 8-bit stencil, samples the GL can hold in an integer texture); else none.
+    VisibilityAttachment attach_visibility(const Camera& camera);
 
     FrameSetup setup_;
     std::unique_ptr<BackgroundPass> background_;
@@ -120,8 +122,7 @@ class FrameRenderer {
     std::string sight_note_;
     std::unique_ptr<StoneMethod> method_;
     std::unique_ptr<RingRenderer> ring_;
-    Texture visibility_;  // R16UI: each pixel's entry facet (StoneFrame::visibility)
-    glm::ivec2 visibility_size_{0};
+    std::unique_ptr<VisibilityTarget> visibility_;  // StoneFrame::visibility
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
     double ring_radius_mm_ = 0.0;           // the metal's, about the centre

@@ -8,6 +8,7 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
+#include "gpu/visibility_target.hpp"
 #include "optics/spectrum.hpp"
 #include "piece/placement.hpp"
 #include "render/camera.hpp"
@@ -47,10 +48,10 @@ struct StoneFrame {
     // In a piece's still view after its first frame: the piece its exits follow
     // (stone_sight.glsl); null: the cube alone.
     const RingRenderer* piece_sight = nullptr;
-    // Where the visibility pass ran (FrameRenderer::render): its target, an R16UI texture of
-    // the picture's size holding each pixel's entry facet, and this stone's number (1 + its
-    // place in the frame) in the stencil where it is seen; 0: the stone is drawn facet by facet.
-    GLuint visibility = 0;
+    // Where the visibility pass ran (FrameRenderer::render): its target, holding each pixel's
+    // (or sample's) entry facet and stone, and this stone's number (1 + its place in the frame)
+    // in the stencil where it is seen; no texture: the stone is drawn facet by facet.
+    VisibilityAttachment visibility{};
     std::uint32_t stone_id = 0;
 };
 

@@ -32,11 +32,11 @@ Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
         "program '" + spec.name + "', " + stage_name + " shader " + join(names);
     // Every stage sees the same header; "#line 1 N" restarts line numbers per chunk, so the
     // driver's "0:12" reads as chunk 0, line 12 and the log below names the chunks in order.
-    std::string text =
-        "#version 300 es\nprecision highp float;\nprecision highp int;\n"
-        "precision highp sampler2D;\nprecision highp usampler2D;\n"
-        "precision highp isampler2D;\nprecision highp samplerCube;\n"
-        "precision highp usamplerCube;\n";
+    std::string text = "#version " + spec.glsl_version +
+                       "\nprecision highp float;\nprecision highp int;\n"
+                       "precision highp sampler2D;\nprecision highp usampler2D;\n"
+                       "precision highp isampler2D;\nprecision highp samplerCube;\n"
+                       "precision highp usamplerCube;\n";
     for (const std::string& d : spec.defines) text += "#define " + d + "\n";
     for (std::size_t i = 0; i < names.size(); ++i) {
         auto chunk = shader_text(names[i]);

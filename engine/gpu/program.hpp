@@ -1,8 +1,8 @@
 #pragma once
-// A linked GLSL ES 3.00 program built from the embedded sources (shader_sources.hpp). Every
-// stage starts with "#version 300 es", high precision and the given #defines, then the named
-// chunks in order. Compile and link failures name the program, the stage and its files, and
-// carry the driver's log.
+// A linked GLSL ES program built from the embedded sources (shader_sources.hpp). Every stage
+// starts with its "#version" (3.00 but where a feature needs 3.10), high precision and the given
+// #defines, then the named chunks in order. Compile and link failures name the program, the stage
+// and its files, and carry the driver's log.
 
 #include <cstdint>
 #include <functional>
@@ -28,6 +28,9 @@ struct ProgramSpec {
     // The ShaderFeature bits its sources test (program_variants.hpp): the tests build every
     // combination.
     std::uint32_t features = 0;
+    // "300 es"; "310 es" where the sources need OpenGL ES 3.1 (glsl_version() in
+    // program_variants.hpp), built only on a context that has it.
+    std::string glsl_version = "300 es";
 };
 
 class Program {

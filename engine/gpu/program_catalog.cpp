@@ -17,7 +17,7 @@ std::vector<std::string> stone_sources(const char* method) {
 std::vector<ProgramSpec> all_program_specs() {
     constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
     constexpr std::uint32_t kTraceFeatures =
-        kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility;
+        kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility | kVisibilitySamples;
     return {
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
         // The thesis' shading stage from ray-tables (table_method.hpp).
@@ -37,7 +37,7 @@ std::vector<ProgramSpec> all_program_specs() {
          {"stone.vert"},
          stone_sources("trace.frag"),
          {"NON_CONVEX"},
-         kShadingFeatures | kFireExact | kVisibility},
+         kShadingFeatures | kFireExact | kVisibility | kVisibilitySamples},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The stones' depth with each pixel's stone and entry facet (frame_renderer.hpp).
@@ -56,7 +56,7 @@ std::vector<ProgramSpec> all_program_specs() {
          {"texel.glsl", "specular.glsl", "metal.glsl", "piece_path.glsl", "metal_sight.glsl",
           "ring.frag"},
          {},
-         kLightCountBits | kSeesPiece},
+         kLightCountBits | kSeesPiece | kVisibility},
         // The environment filtered by the metal's lobe (metal_environment.hpp).
         {"metal_filter", {"fullscreen.vert"}, {"metal_filter.frag"}, {}},
         // The picture from HDR radiance to the display: glare pyramid, tone curve
@@ -71,10 +71,12 @@ std::vector<ProgramSpec> all_program_specs() {
     };
 }
 
-Result<Program> build_program(const std::string& name, const std::vector<std::string>& defines) {
+Result<Program> build_program(const std::string& name, const std::vector<std::string>& defines,
+                              const std::string& glsl_version) {
     for (ProgramSpec spec : all_program_specs()) {
         if (spec.name != name) continue;
         spec.defines.insert(spec.defines.end(), defines.begin(), defines.end());
+        spec.glsl_version = glsl_version;
         return Program::build(spec);
     }
     return Error{"no GPU program named '" + name + "'"};

@@ -12,8 +12,8 @@ namespace gem::gpu {
 // Names: "background", "table", "table_non_convex", "trace", "trace_non_convex", "phong",
 // "ring", ... (see program_catalog.cpp).
 std::vector<ProgramSpec> all_program_specs();
-// `defines` are added to the program's own.
-Result<Program> build_program(const std::string& name,
-                              const std::vector<std::string>& defines = {});
+// `defines` are added to the program's own; `glsl_version` as ProgramSpec's.
+Result<Program> build_program(const std::string& name, const std::vector<std::string>& defines = {},
+                              const std::string& glsl_version = "300 es");
 
 }  // namespace gem::gpu

@@ -22,7 +22,12 @@ std::vector<std::string> feature_defines(std::uint32_t features) {
     }
     if ((features & kSeesPiece) != 0) defines.emplace_back("SEES_PIECE");
     if ((features & kVisibility) != 0) defines.emplace_back("VISIBILITY");
+    if ((features & kVisibilitySamples) != 0) defines.emplace_back("VISIBILITY_SAMPLES");
     return defines;
+}
+
+std::string glsl_version(std::uint32_t features) {
+    return (features & kVisibilitySamples) != 0 ? "310 es" : "300 es";
 }
 
 std::uint32_t specular_power_feature(double h) {
@@ -36,7 +41,7 @@ ProgramVariants::ProgramVariants(std::string name, std::vector<std::string> defi
 Result<const Program*> ProgramVariants::build(std::uint32_t features) {
     std::vector<std::string> defines = defines_;
     for (std::string& define : feature_defines(features)) defines.push_back(std::move(define));
-    auto program = build_program(name_, defines);
+    auto program = build_program(name_, defines, glsl_version(features));
     if (!program) return Error{program.error()};
     return &built_.emplace(features, std::move(program).value()).first->second;
 }

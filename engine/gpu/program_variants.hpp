@@ -34,6 +34,10 @@ enum ShaderFeature : std::uint32_t {
     // VISIBILITY: a stone drawn as the rectangle about it, each pixel's stone and entry facet
     // read from the visibility pass (frame_renderer.hpp): its pixels shaded in whole blocks.
     kVisibility = 1u << 20,
+    // VISIBILITY_SAMPLES: with VISIBILITY, the frame is multisampled and the visibility target
+    // holds each sample's stone and entry facet (a multisampled integer texture, OpenGL ES 3.1):
+    // each facet a pixel's samples show is traced once, weighed by its samples.
+    kVisibilitySamples = 1u << 21,
 };
 // Bits 6-8 hold the number of lights, 0 .. kMaxLights (LIGHT_COUNT n, shading.glsl).
 inline constexpr std::uint32_t kLightCountShift = 6;
@@ -59,7 +63,7 @@ constexpr int specular_power_of(std::uint32_t features) {
     return static_cast<int>((features & kSpecularPowerBits) >> kSpecularPowerShift);
 }
 static_assert((kSeesPiece & kSpecularPowerBits) == 0 && kSeesPiece > kSpecularPowerBits);
-static_assert(kVisibility > kSeesPiece);
+static_assert(kVisibility > kSeesPiece && kVisibilitySamples > kVisibility);
 // What shading_features() (frame_uniforms.hpp) may ask of a stone method's program.
 inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfinity | kAbsorbing |
                                                   kLightCountBits | kSpecularPowerBits | kSeesPiece;
@@ -67,6 +71,8 @@ inline constexpr std::uint32_t kShadingFeatures = kThesisShading | kCubeAtInfini
 // The #defines of `features`, in bit order, then the light count (none for no lights), the
 // specular power (none for pow at run time) and SEES_PIECE.
 std::vector<std::string> feature_defines(std::uint32_t features);
+// The GLSL ES version `features` need: "310 es" for a multisampled integer texture, else "300 es".
+std::string glsl_version(std::uint32_t features);
 
 class ProgramVariants {
   public:

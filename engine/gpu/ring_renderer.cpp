@@ -10,6 +10,7 @@
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/program_catalog.hpp"
+#include "gpu/visibility_target.hpp"
 #include "optics/microfacet.hpp"
 #include "render/lights.hpp"
 
@@ -59,9 +60,14 @@ Result<RingRenderer> RingRenderer::make(const MetalMesh& mesh, const Environment
                          std::to_string(mesh.positions.size()) + " vertices"};
         }
     }
-    // Every light count up front: draws are const and must not build.
+    // Every light count up front: draws are const and must not build. Where a multisampled
+    // frame's stones may go by visibility (VisibilityTarget), each again marking the samples it
+    // takes from them.
     ProgramVariants ring("ring", {});
     auto built = ring.build_every_light_count(0, [](const Program&) {});
+    if (built && max_integer_samples() >= 2) {
+        built = ring.build_every_light_count(kVisibility, [](const Program&) {});
+    }
     if (!built) return Error{built.error()};
     auto depth = build_program("ring_depth");
     if (!depth) return Error{depth.error()};
@@ -189,7 +195,8 @@ void RingRenderer::set_piece_sight_uniforms(const Program& program, const Shadin
 }
 
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
-                                const ShadingSettings& lights_from, int still_sample) const {
+                                const ShadingSettings& lights_from, int still_sample,
+                                bool marks_visibility) const {
     if (index_count_ == 0) return true;
     // Orthographic: every pixel looks along forward, so the eye is a direction (toward it).
     const bool at_infinity = camera.orthographic();
@@ -203,9 +210,12 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
     // The still view's first frame is the moving view's own (multisampled, which llvmpipe
     // shades sample by sample: the halo's 11 s at 1920×1080 with its metal seeing the piece).
     if (!sight_ || still_sample < 1 || sight_->triangle_count() == 0) {
-        draw_mesh(*ring_.find(lights), vp, eye, at_infinity, lights_from, closed_);
+        const Program* ring = ring_.find(lights | (marks_visibility ? kVisibility : 0u));
+        if (ring == nullptr) return Error{"ring pass: no program marks the stones' visibility"};
+        draw_mesh(*ring, vp, eye, at_infinity, lights_from, closed_);
         return gl_check("ring pass");
     }
+    if (marks_visibility) return Error{"ring pass: a frame seeing its piece marks no visibility"};
     // Its rays through the piece cost far more than a depth pass: the metal's depth is drawn
     // alone first, so that only the metal seen is shaded (bench_pieces' still metal, halo 823
     // against 656 ms, band 889 against 502). A moving frame's metal shades cheaply enough that

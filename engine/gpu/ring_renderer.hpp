@@ -46,8 +46,12 @@ class RingRenderer {
     // scene_radius_mm), so the ring must lie inside that sphere. `still_sample`: the frame's
     // number in a still view, whose reflected rays follow the piece (see_piece()) from its
     // second frame on; -1 while the view moves, which draws the split sum alone.
+    // `marks_visibility` (a multisampled frame's, not seeing its piece): the bound framebuffer's
+    // second draw buffer is the stones' visibility target, where the metal writes no stone at
+    // the samples it takes (frame_renderer.cpp).
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
-                      const ShadingSettings& lights_from, int still_sample = -1) const;
+                      const ShadingSettings& lights_from, int still_sample = -1,
+                      bool marks_visibility = false) const;
 
     // Whether a still view's rays may follow the piece (see_piece() succeeded).
     bool sees_piece() const { return sight_ && sight_->triangle_count() > 0; }
@@ -80,7 +84,7 @@ class RingRenderer {
     void set_path_uniforms(const Program& program, const ShadingSettings& lights, int still_sample,
                            int first_unit) const;
 
-    ProgramVariants ring_;             // one per light count, all built by make()
+    ProgramVariants ring_;  // one per light count (and marking visibility), all built by make()
     ProgramVariants ring_sees_piece_;  // ... seeing its piece (SEES_PIECE): see_piece()
     Program depth_;                    // the metal's depth alone
     std::optional<PieceSight> sight_;

@@ -8,6 +8,8 @@
 #include <limits>
 #include <optional>
 
+#include <GLES3/gl31.h>
+
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/environment_cube.hpp"
 #include "gpu/framebuffer_scope.hpp"
@@ -324,7 +326,8 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     const std::uint32_t features =
         shading_features(frame) |
         fire_features(dispersion, convex_, frame.still.wavelengths != nullptr) |
-        (frame.visibility != 0 ? kVisibility : 0u);
+        (frame.visibility.texture != 0 ? kVisibility : 0u) |
+        (frame.visibility.samples > 0 ? kVisibilitySamples : 0u);
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
@@ -350,7 +353,7 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
                                             : channel_indices(frame.material));
     p.set("u_channel_mix", still != nullptr ? glm::mat3(still->mix) : glm::mat3(1.0f));
 
-    if (frame.visibility != 0) {
+    if (frame.visibility.texture != 0) {
         draw_rectangle(p, frame);
     } else {
         geometry_.draw_front_faces();
@@ -359,10 +362,15 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
 }
 
 void TraceMethod::draw_rectangle(const Program& program, const StoneFrame& frame) const {
+    const bool samples = frame.visibility.samples > 0;
     glActiveTexture(GL_TEXTURE0 + kVisibilityUnit);
-    glBindTexture(GL_TEXTURE_2D, frame.visibility);
+    glBindTexture(samples ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D, frame.visibility.texture);
     glActiveTexture(GL_TEXTURE0);
     program.set("u_visibility", kVisibilityUnit);
+    if (samples) {
+        program.set("u_samples", frame.visibility.samples);
+        program.set("u_stone", frame.stone_id);
+    }
     // The stone's corners through the matrix its depth pass drew them with, and a pixel more
     // each way; the whole picture where a corner lies behind a perspective eye.
     const glm::mat4 vp = stone_view_projection(frame);
@@ -405,9 +413,10 @@ void TraceMethod::draw_rectangle(const Program& program, const StoneFrame& frame
 
 void TraceMethod::draw_depth(const StoneFrame& frame, const Program& depth) const {
     depth.set("u_view_projection", stone_view_projection(frame));
-    if (frame.visibility != 0) {
+    if (frame.visibility.texture != 0) {
         // Into the visibility target alone (the scene's draw buffer is none): a colour mask
         // would mask it too.
+        depth.set("u_stone", frame.stone_id);
         geometry_.draw_visibility(frame.stone_id);
     } else {
         geometry_.draw_depth();
@@ -453,7 +462,7 @@ class TraceStones final : public StoneMethod {
     Result<bool> draw_depth(const std::vector<StoneFrame>& frames,
                             const std::vector<std::size_t>& kinds) override {
         const Program& depth =
-            !frames.empty() && frames.front().visibility != 0 ? visibility_ : depth_;
+            !frames.empty() && frames.front().visibility.texture != 0 ? visibility_ : depth_;
         depth.use();
         for (std::size_t i = 0; i < frames.size(); ++i) {
             methods_[kinds[i]]->draw_depth(frames[i], depth);

@@ -375,6 +375,9 @@ void KioskSession::rebuild_scene(double now_s) {
     if (const std::string& note = scene_->renderer().sight_note(); !note.empty()) {
         log_error(note);
     }
+    if (const std::string& note = scene_->renderer().visibility_note(); !note.empty()) {
+        log_info(note);
+    }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }
 

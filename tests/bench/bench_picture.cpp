@@ -5,7 +5,8 @@
 //     size): the scene (its stone and metal passes shown apart) drawn at 1 sample without glare
 //     and at 4× MSAA with glare 0.04, then the resolve, the still view's running mean, the
 //     glare pyramid and the tone curve, each bounded by glFinish; medians of --frames frames,
-//     trace (depth 8, first-order fire) and phong; the share of a moving frame the passes after
+//     trace (depth 8, first-order fire; at 4× MSAA also with its stones drawn facet by facet,
+//     without the visibility pass) and phong; the share of a moving frame the passes after
 //     the scene take (the present pass to the screen's buffer included: a back buffer that
 //     lacks this frame's changes only); and the share of the picture they rewrote (around
 //     the piece and its glare's reach, hdr_picture.hpp). The bench's last line is for a script to
@@ -215,8 +216,11 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         const char* name;
         int samples;
         double glare;
+        bool by_facet;  // the stones without the visibility pass (the trace's only)
     };
-    const Look looks[] = {{"1 sample", 1, 0.0}, {"4×, glare", 4, 0.04}};
+    const Look looks[] = {{"1 sample", 1, 0.0, false},
+                          {"4×, glare", 4, 0.04, false},
+                          {"4×, by facet", 4, 0.04, true}};
     double kiosk_total[2] = {};  // trace, 4× MSAA and glare: zoom 1, zoom 0.5
     double kiosk_finishing = 0.0;
     for (const char* method : {"phong", "trace"}) {
@@ -228,6 +232,9 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         for (int z = 0; z < 2; ++z) {
             const double zoom = z == 0 ? 1.0 : 0.5;
             for (const Look& look : looks) {
+                const bool trace = std::strcmp(method, "trace") == 0;
+                if (look.by_facet && !trace) continue;
+                renderer.set_visibility_pass(!look.by_facet);
                 const PassCosts c = time_passes(renderer, framing, zoom, look.samples, look.glare,
                                                 frames, picture, pass, screen);
                 std::printf(
@@ -237,7 +244,7 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
                     c.tone, c.present, c.total(), 100.0 * c.finishing() / c.total(),
                     100.0 * c.rewritten);
                 std::fflush(stdout);
-                if (std::strcmp(method, "trace") == 0 && look.samples == 4) {
+                if (trace && look.samples == 4 && !look.by_facet) {
                     kiosk_total[z] = c.total();
                     if (z == 0) kiosk_finishing = c.finishing() / c.total();
                 }

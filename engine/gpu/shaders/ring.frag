@@ -3,7 +3,12 @@
 
 in vec3 v_position;
 in vec3 v_normal;
-out vec4 o_colour;
+layout(location = 0) out vec4 o_colour;
+#ifdef VISIBILITY
+// A multisampled frame's stones by visibility (frame_renderer.cpp): the samples the metal takes
+// from a stone hold no stone, so that the stone's pixel does not weigh the facet it hides there.
+layout(location = 1) out uvec2 o_visible;
+#endif
 
 uniform vec3 u_eye;             // eye position; a direction toward the eye when at infinity
 uniform int u_eye_at_infinity;  // 1: orthographic camera
@@ -20,4 +25,7 @@ void main() {
     colour += piece_correction(v_position, n, face, v);
 #endif
     o_colour = vec4(colour, 1.0);
+#ifdef VISIBILITY
+    o_visible = uvec2(0u);
+#endif
 }

@@ -39,7 +39,10 @@ vec3 g_sight_lights;  // ... and the lights, which the chosen exit need not be s
 uniform float u_environment_mean;
 const float kLeastShown = 1e-3;
 
+// Once per entry traced (a multisampled pixel may trace one per facet its samples show).
 void start_sight() {
+    g_sight_total = 0.0;
+    g_sight_chosen = 0.0;
     g_sight_on = sight_traced();
     if (g_sight_on) seed_random();
 }

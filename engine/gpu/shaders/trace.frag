@@ -17,9 +17,20 @@ in vec3 v_position;  // the entry point, interpolated
 flat in uint v_facet;
 layout(location = 0) out vec4 o_colour;
 #ifdef VISIBILITY
-// Drawn as the rectangle about the stone, under a stencil test that keeps its own pixels: each
-// pixel's entry facet from the visibility pass (stone_visibility.frag).
+// Drawn as the rectangle about the stone, under a stencil test that keeps its own pixels (or
+// samples): each pixel's entry facet from the visibility pass (stone_visibility.frag).
+#ifdef VISIBILITY_SAMPLES
+// Each sample's facet and stone (GLSL ES 3.10): the pixel's colour is written to the samples
+// the stencil keeps, so each facet the stone shows there is traced once and weighed by its
+// samples. The resolve averages a pixel's samples, so the picture is the one drawn facet by
+// facet, each facet's triangle writing its own samples.
+uniform highp usampler2DMS u_visibility;
+uniform int u_samples;
+uniform uint u_stone;
+const int kMaxSamples = 8;  // FrameRenderer::kMaxVisibilitySamples
+#else
 uniform mediump usampler2D u_visibility;
+#endif
 #endif
 
 uniform int u_facet_count;
@@ -630,22 +641,11 @@ vec3 follow_branches(vec3 entry, vec3 inward, float weight, int entry_facet, flo
 
 #endif
 
-void main() {
+// The colour of the pixel's ray (origin, direction) entering the stone through `facet`.
+vec3 shade_entry(int facet, vec3 origin, vec3 direction) {
     // The pixel's own ray meets the facet the rasteriser found where its plane is: the entry
     // point as exact as a plane test makes it (the interpolated v_position is a rounding
     // further off, enough to tip a deep path over an edge).
-#ifdef VISIBILITY
-    // The stencil test kept this stone's pixels only; a block's other pixels still run (their
-    // values feed its derivatives) and may read another stone's facet or none: held to this
-    // stone's facets, so that no index runs past its arrays.
-    int facet =
-        min(int(texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r), u_facet_count - 1);
-#else
-    int facet = int(v_facet);
-#endif
-    vec3 origin;
-    vec3 direction;
-    camera_ray(fragment_ndc(gl_FragCoord), origin, direction);
     vec4 entry_plane = facet_plane(facet);
     vec3 n = entry_plane.xyz;
     float facing = dot(n, direction);
@@ -713,5 +713,49 @@ void main() {
     colour += stone_correction();
 #endif
 
-    o_colour = vec4(colour, 1.0);
+    return colour;
+}
+
+void main() {
+    vec3 origin;
+    vec3 direction;
+    camera_ray(fragment_ndc(gl_FragCoord), origin, direction);
+#if defined(VISIBILITY_SAMPLES)
+    // The facets the stone shows at this pixel's samples, each with its count. A block's
+    // pixels with none of the stone's samples still run (their values feed its derivatives)
+    // and write nothing the stencil keeps. Facets are held to this stone's, as below.
+    ivec2 texel = ivec2(gl_FragCoord.xy);
+    int facets[kMaxSamples];
+    int counts[kMaxSamples];
+    int distinct = 0;
+    for (int s = 0; s < u_samples; ++s) {
+        uvec2 seen = texelFetch(u_visibility, texel, s).rg;
+        if (seen.g != u_stone) continue;
+        int facet = min(int(seen.r), u_facet_count - 1);
+        int k = 0;
+        while (k < distinct && facets[k] != facet) ++k;
+        if (k == distinct) {
+            facets[k] = facet;
+            counts[k] = 0;
+            ++distinct;
+        }
+        ++counts[k];
+    }
+    vec3 colour = vec3(0.0);
+    int held = 0;
+    for (int k = 0; k < distinct; ++k) {
+        colour += float(counts[k]) * shade_entry(facets[k], origin, direction);
+        held += counts[k];
+    }
+    o_colour = vec4(held > 0 ? colour / float(held) : vec3(0.0), 1.0);
+#elif defined(VISIBILITY)
+    // The stencil test kept this stone's pixels only; a block's other pixels still run (their
+    // values feed its derivatives) and may read another stone's facet or none: held to this
+    // stone's facets, so that no index runs past its arrays.
+    int facet =
+        min(int(texelFetch(u_visibility, ivec2(gl_FragCoord.xy), 0).r), u_facet_count - 1);
+    o_colour = vec4(shade_entry(facet, origin, direction), 1.0);
+#else
+    o_colour = vec4(shade_entry(int(v_facet), origin, direction), 1.0);
+#endif
 }
