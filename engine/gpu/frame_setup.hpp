@@ -35,10 +35,11 @@ struct FrameSetup {
     // needs; `triangles` traces non-convex stones through their triangles (a benchmark's
     // comparison).
     ExitSearch trace_search = ExitSearch::measured;
-    // Where the method can (StoneMethod::shades_by_visibility) and the frame is drawn one
-    // sample a pixel: the stones' depth pass also writes each pixel's stone and entry facet,
-    // and each stone is shaded as the rectangle about it, its pixels in whole blocks, not facet
-    // by facet (frame_renderer.hpp). False: facet by facet always (to measure the two).
+    // Where the method can (StoneMethod::shades_by_visibility) and the GL holds the frame's
+    // samples in an integer texture (visibility_target.hpp): the stones' depth pass also writes
+    // each pixel's (or sample's) stone and entry facet, and each stone is shaded as the
+    // rectangle about it, its pixels in whole blocks, not facet by facet (frame_renderer.hpp).
+    // False: facet by facet always (to measure the two).
     bool visibility_pass = true;
     TableOptions table;
     // What surrounds everything; must outlive the renderer (an orthographic frame's background

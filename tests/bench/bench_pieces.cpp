@@ -17,7 +17,10 @@
 // The stones are shaded through the visibility pass where the frame allows it (one sample a
 // pixel: FrameSetup::visibility_pass); --facet-by-facet draws them as before it, to compare.
 //
-//   bench_pieces [--size WxH] [--frames N] [--exact-fire] [--facet-by-facet]
+// --samples N draws the moving frames multisampled, as the kiosk's picture does (picture.msaa);
+// a still view's frames are single samples there too.
+//
+//   bench_pieces [--size WxH] [--frames N] [--samples N] [--exact-fire] [--facet-by-facet]
 //                [--tables FILE.gemdb ...] [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
 //    9 frames each)
@@ -38,6 +41,7 @@
 #include "app/start_view.hpp"
 #include "app/stone_scene.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "piece/piece_file.hpp"
 #include "render/piece_tracer.hpp"
@@ -184,6 +188,7 @@ int main(int argc, char** argv) {
     bool exact_fire = false;
     bool facet_by_facet = false;
     int depth = 8;
+    int samples = 1;
     std::vector<std::string> files;
     std::vector<std::shared_ptr<const gem::Database>> databases;
     for (int i = 1; i < argc; ++i) {
@@ -194,6 +199,8 @@ int main(int argc, char** argv) {
             frames = std::atoi(argv[++i]);
         } else if (a == "--depth" && i + 1 < argc) {
             depth = std::atoi(argv[++i]);
+        } else if (a == "--samples" && i + 1 < argc) {
+            samples = std::atoi(argv[++i]);
         } else if (a == "--exact-fire") {
             exact_fire = true;
         } else if (a == "--facet-by-facet") {
@@ -215,6 +222,10 @@ int main(int argc, char** argv) {
     }
     auto context = must(gem::gpu::EglContext::headless());
     auto target = must(gem::gpu::RenderTarget::make(width, height));
+    gem::gpu::PictureOptions multisampled;
+    multisampled.samples = samples;
+    auto picture = must(gem::gpu::HdrPicture::make(width, height, multisampled));
+    if (samples > 1 && picture.samples() < 2) fail("this GL multisamples no float picture");
     // The kiosk's studio look with one key light, as bench_picture lights its ring.
     gem::kiosk::LookChoice look;
     look.lights = {{{-30.0, 80.0, 45.0}, false, {2.0, 2.0, 2.0}}};
@@ -270,6 +281,12 @@ int main(int argc, char** argv) {
     for (Subject& s : subjects) s.scene->renderer().prepare(s.camera, glm::dvec3(0.0), true);
     for (int f = -1; f < frames; ++f) {
         for (Subject& s : subjects) {
+            if (samples > 1) {
+                picture.begin_frame(false);
+                picture.bind();
+            } else {
+                target.bind();
+            }
             glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             const gem::gpu::FrameStats stats =
@@ -280,6 +297,7 @@ int main(int argc, char** argv) {
             s.metal_ms.push_back(stats.metal_ms);
             s.submit_ms.push_back(stats.stone_submit_ms);
             s.depth_ms.push_back(stats.stone_depth_ms);
+            target.bind();
             gem::gpu::StillFrame still;
             still.index = f + 1;
             const gem::gpu::FrameStats still_stats =
@@ -304,8 +322,12 @@ int main(int argc, char** argv) {
         }
         s.sight_ms = median(ms);
     }
-    std::printf("%dx%d, the kiosk's start view, trace (%s fire), median of %d frames in turn\n",
-                width, height, exact_fire ? "exact" : "first-order", frames);
+    std::printf(
+        "%dx%d, the kiosk's start view, trace (%s fire), moving frames at %d sample%s, stones %s, "
+        "median of %d frames in turn\n",
+        width, height, exact_fire ? "exact" : "first-order", std::max(1, picture.samples()),
+        picture.samples() > 1 ? "s" : "", facet_by_facet ? "facet by facet" : "by visibility",
+        frames);
     std::printf(
         "%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s %12s %8s %13s\n",
         "piece", "models", "stones", "frame ms", "stone ms", "depth ms", "submit ms", "metal ms",

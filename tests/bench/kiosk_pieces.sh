@@ -2,8 +2,8 @@
 # The kiosk's frames over one recorded drag, for one shipped piece at a time, the pieces in
 # turn ROUNDS times: a moving view's draw time against the solitaire's is what a piece's small
 # stones and metal cost while the ring turns (the still view, refined between the drag's
-# strokes, is timed apart). The shipped config with render.method "trace", picture.msaa 1 and
-# picture.glare 0, headless at WIDTHxHEIGHT, a catalogue of the one piece each.
+# strokes, is timed apart). The shipped config with render.method "trace", picture.msaa 1 (or
+# $MSAA) and picture.glare 0, headless at WIDTHxHEIGHT, a catalogue of the one piece each.
 #
 # Usage: tests/bench/kiosk_pieces.sh BUILD_DIR [ROUNDS] [WIDTHxHEIGHT] [PIECE...]
 #   e.g. tests/bench/kiosk_pieces.sh build/test 3 1920x1080 solitaire halo eternity-band
@@ -19,7 +19,7 @@ pieces=("$@")
 here=$(cd "$(dirname "$0")/../.." && pwd)
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
-sed -e 's/^method = .*/method = "trace"/' -e 's/^msaa = .*/msaa = 1/' \
+sed -e 's/^method = .*/method = "trace"/' -e "s/^msaa = .*/msaa = ${MSAA:-1}/" \
   -e 's/^glare = .*/glare = 0.0/' "$here/config/gemkiosk.toml" >"$out/gemkiosk.toml"
 for piece in "${pieces[@]}"; do
   mkdir -p "$out/$piece/pieces" "$out/$piece/stones"
