@@ -247,12 +247,22 @@ std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
     return SceneCover{clamped(rect, camera.width(), camera.height()), *background};
 }
 
-VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera) {
+VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera,
+                                                      const StillFrame& still) {
     if (!setup_.visibility_pass || !method_->shades_by_visibility()) return {};
     GLint stencil = 0;
     glGetIntegerv(GL_STENCIL_BITS, &stencil);
     if (stencil < 8 || frames_.size() > 255) return {};
-    return visibility_->attach(glm::ivec2(camera.width(), camera.height()));
+    VisibilityAttachment attached =
+        visibility_->attach(glm::ivec2(camera.width(), camera.height()));
+    // A metal that follows its rays through the piece marks no samples (its program has no
+    // such output): a multisampled frame of it (a still view's frames are single samples) goes
+    // facet by facet.
+    if (attached.samples > 0 && ring_ && ring_->follows_piece(still.index)) {
+        visibility_->detach();
+        return {};
+    }
+    return attached;
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
@@ -291,8 +301,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         frame.scene_radius_mm = scene_radius_mm_;
         frame.still = still;
         // As the metal's rays (RingRenderer::draw), from the still view's second frame.
-        frame.piece_sight =
-            ring_ && ring_->sees_piece() && still.index >= 1 ? ring_.get() : nullptr;
+        frame.piece_sight = ring_ && ring_->follows_piece(still.index) ? ring_.get() : nullptr;
     }
     // The stones' depth first (where the method has that pass), then the metal, then the
     // stones: each is shaded only where it is seen. Stones shaded before the metal cost every
@@ -305,7 +314,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // facet triangle it met (bench_pieces: 1.6 facets a block for the halo's stones).
     // In a multisampled frame each sample holds its stone and facet, and each stone's pixel
     // traces each facet its samples show once, weighed by them (trace.frag).
-    const VisibilityAttachment visibility = attach_visibility(camera);
+    const VisibilityAttachment visibility = attach_visibility(camera, still);
     // The target is off the framebuffer again, and the stencil test the visibility pass turns
     // on off, however the stones' passes end; a frame copied from these (a stone drawn alone)
     // is drawn facet by facet.

@@ -97,8 +97,9 @@ class FrameRenderer {
     std::optional<glm::vec3> flat_background(const Camera& camera) const;
     // The visibility target attached to the bound framebuffer as its second colour, where
     // this frame can use it (the method shades by it, a framebuffer object, at most 255 stones
-    // for an 8-bit stencil, samples the GL can hold in an integer texture); else none.
-    VisibilityAttachment attach_visibility(const Camera& camera);
+    // for an 8-bit stencil, samples the GL can hold in an integer texture, a metal that marks
+    // them); else none.
+    VisibilityAttachment attach_visibility(const Camera& camera, const StillFrame& still);
 
     FrameSetup setup_;
     std::unique_ptr<BackgroundPass> background_;

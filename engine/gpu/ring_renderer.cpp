@@ -209,7 +209,7 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
     // metal pass on llvmpipe (bench_pieces).
     // The still view's first frame is the moving view's own (multisampled, which llvmpipe
     // shades sample by sample: the halo's 11 s at 1920×1080 with its metal seeing the piece).
-    if (!sight_ || still_sample < 1 || sight_->triangle_count() == 0) {
+    if (!follows_piece(still_sample)) {
         const Program* ring = ring_.find(lights | (marks_visibility ? kVisibility : 0u));
         if (ring == nullptr) return Error{"ring pass: no program marks the stones' visibility"};
         draw_mesh(*ring, vp, eye, at_infinity, lights_from, closed_);

@@ -55,6 +55,9 @@ class RingRenderer {
 
     // Whether a still view's rays may follow the piece (see_piece() succeeded).
     bool sees_piece() const { return sight_ && sight_->triangle_count() > 0; }
+    // Whether draw() with `still_sample` follows the rays through the piece (and so marks no
+    // visibility).
+    bool follows_piece(int still_sample) const { return sees_piece() && still_sample >= 1; }
     // For a stone's program that follows its exits into the piece in the still frame
     // `still_sample` (stone_sight.glsl): the metal's and the piece's uniforms, its textures on
     // the kPieceSightUnits units from `first_unit`. Needs sees_piece().

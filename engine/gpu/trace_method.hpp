@@ -62,6 +62,11 @@ class TraceMethod {
     // The stone's depth alone for `frame` (StoneMethod::draw_depth), with `depth` (the
     // stone_depth program) in use.
     void draw_depth(const StoneFrame& frame, const Program& depth) const;
+    // A multisampled visibility target's samples within the rectangle about the stone cleared
+    // to no stone, before any stone's visibility pass (the scissor test on; the caller keeps
+    // and restores it): the stone's shading pass reads every sample of its rectangle's pixels,
+    // and one no stone covers this frame would still hold an earlier frame's stone and facet.
+    void clear_visibility(const StoneFrame& frame) const;
 
     // The search in use, and what the measurement gave a convex stone's (ms for the test
     // picture; 0 when not measured), also as a log phrase.
@@ -76,6 +81,9 @@ class TraceMethod {
     TraceMethod(StoneGeometry geometry, ProgramVariants programs, bool convex);
     // The program of `features`, attached to the stone's block when it is first built.
     Result<const Program*> program(std::uint32_t features);
+    // The rectangle about the stone in normalised device coordinates (x0, y0, x1, y1), a pixel
+    // more each way, within the picture; nullopt where none of it is on the picture.
+    std::optional<glm::vec4> rectangle(const StoneFrame& frame) const;
     // The stone as the rectangle about it, where the visibility pass ran (StoneFrame::visibility).
     void draw_rectangle(const Program& program, const StoneFrame& frame) const;
     StoneGeometry geometry_;

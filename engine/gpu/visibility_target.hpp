@@ -33,8 +33,9 @@ class VisibilityTarget {
     explicit VisibilityTarget(int max_integer_samples = gpu::max_integer_samples());
 
     // Attached as the bound draw framebuffer's second colour attachment, sized and sampled as
-    // that framebuffer (the default framebuffer takes none). Not cleared: the stones' pass
-    // reads a pixel only where the stencil says the pass wrote it this frame.
+    // that framebuffer (the default framebuffer takes none). Not cleared here: a multisampled
+    // one is cleared by each frame (FrameRenderer::render), a single-sample one is read only
+    // where the stencil says the pass wrote it this frame.
     VisibilityAttachment attach(glm::ivec2 size);
     // Takes it off the bound draw framebuffer again (before the stones' pass reads it).
     void detach() const;

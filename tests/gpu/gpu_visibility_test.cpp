@@ -227,6 +227,14 @@ TEST(GpuVisibility, AMultisampledFrameIsTheFrameShadedFacetByFacet) {
     view.azimuth_deg = 10.0;
     EXPECT_LE(multisampled_both_ways(piece.value(), view, halo.value().radius_mm(), "halo").most,
               1);
+    // After a frame by visibility where the centre stone filled the picture: the samples it
+    // no longer covers still hold that frame's stones and facets.
+    view.zoom = 6.0;
+    (void)multisampled_both_ways(piece.value(), view, halo.value().radius_mm(), "halo-close");
+    view.zoom = 1.0;
+    EXPECT_LE(
+        multisampled_both_ways(piece.value(), view, halo.value().radius_mm(), "halo-after").most,
+        1);
     // Closer, off centre: stones cut by the picture's edges.
     view.zoom = 2.5;
     view.shift = {0.6, -0.4};

@@ -27,7 +27,7 @@ layout(location = 0) out vec4 o_colour;
 uniform highp usampler2DMS u_visibility;
 uniform int u_samples;
 uniform uint u_stone;
-const int kMaxSamples = 8;  // FrameRenderer::kMaxVisibilitySamples
+const int kMaxSamples = 8;  // VisibilityTarget::kMaxSamples
 #else
 uniform mediump usampler2D u_visibility;
 #endif
