@@ -249,20 +249,22 @@ std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
 
 VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera,
                                                       const StillFrame& still) {
-    if (!setup_.visibility_pass || !method_->shades_by_visibility()) return {};
-    GLint stencil = 0;
-    glGetIntegerv(GL_STENCIL_BITS, &stencil);
-    if (stencil < 8 || frames_.size() > 255) return {};
-    VisibilityAttachment attached =
-        visibility_->attach(glm::ivec2(camera.width(), camera.height()));
-    // A metal that follows its rays through the piece marks no samples (its program has no
-    // such output): a multisampled frame of it (a still view's frames are single samples) goes
-    // facet by facet.
-    if (attached.samples > 0 && ring_ && ring_->follows_piece(still.index)) {
-        visibility_->detach();
+    if (setup_.visibility_pass == VisibilityPass::off || !method_->shades_by_visibility()) {
         return {};
     }
-    return attached;
+    GLint stencil = 0, samples = 0;
+    glGetIntegerv(GL_STENCIL_BITS, &stencil);
+    glGetIntegerv(GL_SAMPLES, &samples);
+    if (stencil < 8 || frames_.size() > 255) return {};
+    if (samples > 0) {
+        if (setup_.visibility_pass == VisibilityPass::where_it_pays && frames_.size() < 2) {
+            return {};
+        }
+        // A metal that follows its rays through the piece marks no samples (its program has
+        // no such output); a still view's frames are single samples.
+        if (ring_ && ring_->follows_piece(still.index)) return {};
+    }
+    return visibility_->attach(glm::ivec2(camera.width(), camera.height()));
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,

@@ -43,7 +43,7 @@ class FrameRenderer {
     Result<bool> set_lights(const std::vector<Light>& lights);
 
     // FrameSetup::visibility_pass, changed between frames (to measure the stones both ways).
-    void set_visibility_pass(bool on) { setup_.visibility_pass = on; }
+    void set_visibility_pass(VisibilityPass pass) { setup_.visibility_pass = pass; }
     // Before a frame: what the stone method needs for `camera`, the view turning at `omega`
     // (StoneMethod::prepare: the table's views decoded ahead of the turn).
     void prepare(const Camera& camera, const glm::dvec3& omega, bool wait = false) {
@@ -98,7 +98,7 @@ class FrameRenderer {
     // The visibility target attached to the bound framebuffer as its second colour, where
     // this frame can use it (the method shades by it, a framebuffer object, at most 255 stones
     // for an 8-bit stencil, samples the GL can hold in an integer texture, a metal that marks
-    // them); else none.
+    // them, FrameSetup::visibility_pass); else none.
     VisibilityAttachment attach_visibility(const Camera& camera, const StillFrame& still);
 
     FrameSetup setup_;

@@ -18,6 +18,17 @@
 
 namespace gem::gpu {
 
+enum class VisibilityPass {
+    off,  // facet by facet always (to measure the two)
+    // One sample a pixel always; a multisampled frame where it holds more than one stone. One
+    // stone's blocks meet few facets (1.2 a block for the solitaire's diamond at 1080p), and at
+    // 4x MSAA its visibility pass, writing and clearing four samples a pixel, cost more than
+    // whole blocks saved: the solitaire's stone passes 1.26-1.31 times facet by facet, the
+    // halo's 0.84-0.92, the band's 0.59-0.64 (bench_pieces --samples 4, 2026-12-06).
+    where_it_pays,
+    always,  // wherever the GL can (to test and measure a loose stone's multisampled frames)
+};
+
 struct FrameSetup {
     // The stone method, by its name in the registry (stone_method.hpp: "table", "trace",
     // "phong").
@@ -35,12 +46,12 @@ struct FrameSetup {
     // needs; `triangles` traces non-convex stones through their triangles (a benchmark's
     // comparison).
     ExitSearch trace_search = ExitSearch::measured;
-    // Where the method can (StoneMethod::shades_by_visibility) and the GL holds the frame's
-    // samples in an integer texture (visibility_target.hpp): the stones' depth pass also writes
-    // each pixel's (or sample's) stone and entry facet, and each stone is shaded as the
-    // rectangle about it, its pixels in whole blocks, not facet by facet (frame_renderer.hpp).
-    // False: facet by facet always (to measure the two).
-    bool visibility_pass = true;
+    // Whether the stones' depth pass also writes each pixel's (or sample's) stone and entry
+    // facet, so that each stone is shaded as the rectangle about it, its pixels in whole
+    // blocks, not facet by facet (frame_renderer.hpp), where the method can
+    // (StoneMethod::shades_by_visibility) and the GL holds the frame's samples in an integer
+    // texture (visibility_target.hpp).
+    VisibilityPass visibility_pass = VisibilityPass::where_it_pays;
     TableOptions table;
     // What surrounds everything; must outlive the renderer (an orthographic frame's background
     // is its radiance along the view).

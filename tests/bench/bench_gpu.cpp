@@ -152,7 +152,8 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
     setup.trace_search =
         c.triangles ? gem::gpu::ExitSearch::triangles : gem::gpu::ExitSearch::measured;
     setup.table.blend = c.blend;
-    setup.visibility_pass = !c.by_facet;
+    setup.visibility_pass =
+        c.by_facet ? gem::gpu::VisibilityPass::off : gem::gpu::VisibilityPass::where_it_pays;
     setup.environment = &environment;
     if (v.ring) setup.ring = &ring;
     auto renderer = gem::gpu::FrameRenderer::make(std::move(setup));

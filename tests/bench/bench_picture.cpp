@@ -5,13 +5,13 @@
 //     size): the scene (its stone and metal passes shown apart) drawn at 1 sample without glare
 //     and at 4× MSAA with glare 0.04, then the resolve, the still view's running mean, the
 //     glare pyramid and the tone curve, each bounded by glFinish; medians of --frames frames,
-//     trace (depth 8, first-order fire; at 4× MSAA also with its stones drawn facet by facet,
-//     without the visibility pass) and phong; the share of a moving frame the passes after
-//     the scene take (the present pass to the screen's buffer included: a back buffer that
-//     lacks this frame's changes only); and the share of the picture they rewrote (around
-//     the piece and its glare's reach, hdr_picture.hpp). The bench's last line is for a script to
-//     read, the trace at 4× MSAA with glare: "bench_picture: finishing X% of the frame; zoom 0.5
-//     costs R of zoom 1".
+//     trace (depth 8, first-order fire; at 4× MSAA also with its one stone shaded through the
+//     visibility pass, which the kiosk does not choose for one stone: FrameSetup) and phong; the
+//     share of a moving frame the passes after the scene take (the present pass to the screen's
+//     buffer included: a back buffer that lacks this frame's changes only); and the share of the
+//     picture they rewrote (around the piece and its glare's reach, hdr_picture.hpp). The bench's
+//     last line is for a script to read, the trace at 4× MSAA with glare: "bench_picture: finishing
+//     X% of the frame; zoom 0.5 costs R of zoom 1".
 //  2. Edges against the CPU reference at 16 samples per pixel, the loose diamond at 256²
 //     (zoom 1, 40° elevation, the studio, no glare, the same tone curve on both): the mean
 //     8-bit error on its edge pixels (where the reference's own single centre sample is more
@@ -216,11 +216,14 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
         const char* name;
         int samples;
         double glare;
-        bool by_facet;  // the stones without the visibility pass (the trace's only)
+        // The kiosk's (where_it_pays: this one stone's multisampled frames facet by facet),
+        // or always by visibility (the trace's only, to show what that choice saves).
+        gem::gpu::VisibilityPass visibility;
     };
-    const Look looks[] = {{"1 sample", 1, 0.0, false},
-                          {"4×, glare", 4, 0.04, false},
-                          {"4×, by facet", 4, 0.04, true}};
+    using gem::gpu::VisibilityPass;
+    const Look looks[] = {{"1 sample", 1, 0.0, VisibilityPass::where_it_pays},
+                          {"4×, glare", 4, 0.04, VisibilityPass::where_it_pays},
+                          {"4×, visibility", 4, 0.04, VisibilityPass::always}};
     double kiosk_total[2] = {};  // trace, 4× MSAA and glare: zoom 1, zoom 0.5
     double kiosk_finishing = 0.0;
     for (const char* method : {"phong", "trace"}) {
@@ -233,8 +236,9 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
             const double zoom = z == 0 ? 1.0 : 0.5;
             for (const Look& look : looks) {
                 const bool trace = std::strcmp(method, "trace") == 0;
-                if (look.by_facet && !trace) continue;
-                renderer.set_visibility_pass(!look.by_facet);
+                const bool kiosks = look.visibility == VisibilityPass::where_it_pays;
+                if (!kiosks && !trace) continue;
+                renderer.set_visibility_pass(look.visibility);
                 const PassCosts c = time_passes(renderer, framing, zoom, look.samples, look.glare,
                                                 frames, picture, pass, screen);
                 std::printf(
@@ -244,7 +248,7 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
                     c.tone, c.present, c.total(), 100.0 * c.finishing() / c.total(),
                     100.0 * c.rewritten);
                 std::fflush(stdout);
-                if (trace && look.samples == 4 && !look.by_facet) {
+                if (trace && look.samples == 4 && kiosks) {
                     kiosk_total[z] = c.total();
                     if (z == 0) kiosk_finishing = c.finishing() / c.total();
                 }

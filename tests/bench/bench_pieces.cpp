@@ -14,14 +14,15 @@
 // metal pass and stone passes of a still view's frame, whose metal follows its reflections and
 // whose stones their exits through the piece (metal_sight.glsl, stone_sight.glsl).
 //
-// The stones are shaded through the visibility pass where the frame allows it (one sample a
-// pixel: FrameSetup::visibility_pass); --facet-by-facet draws them as before it, to compare.
-//
+// The stones are shaded through the visibility pass where the frame allows it and it pays
+// (FrameSetup::visibility_pass); --facet-by-facet draws them without it, to compare.
 // --samples N draws the moving frames multisampled, as the kiosk's picture does (picture.msaa);
-// a still view's frames are single samples there too.
+// a still view's frames are single samples there too. A multisampled frame of one stone goes
+// facet by facet; --all-by-visibility draws it by visibility too.
 //
-//   bench_pieces [--size WxH] [--frames N] [--samples N] [--exact-fire] [--facet-by-facet]
-//                [--tables FILE.gemdb ...] [piece.toml ...]
+//   bench_pieces [--size WxH] [--frames N] [--samples N] [--exact-fire]
+//                [--facet-by-facet | --all-by-visibility] [--tables FILE.gemdb ...]
+//                [piece.toml ...]
 //   (default: config/pieces/solitaire.toml, halo.toml and eternity-band.toml, 1920x1080,
 //    9 frames each)
 #include <GLES3/gl3.h>
@@ -186,7 +187,7 @@ struct Subject {
 int main(int argc, char** argv) {
     int width = 1920, height = 1080, frames = 9;
     bool exact_fire = false;
-    bool facet_by_facet = false;
+    gem::gpu::VisibilityPass visibility = gem::gpu::VisibilityPass::where_it_pays;
     int depth = 8;
     int samples = 1;
     std::vector<std::string> files;
@@ -204,7 +205,9 @@ int main(int argc, char** argv) {
         } else if (a == "--exact-fire") {
             exact_fire = true;
         } else if (a == "--facet-by-facet") {
-            facet_by_facet = true;
+            visibility = gem::gpu::VisibilityPass::off;
+        } else if (a == "--all-by-visibility") {
+            visibility = gem::gpu::VisibilityPass::always;
         } else if (a == "--tables" && i + 1 < argc) {
             databases.push_back(
                 std::make_shared<const gem::Database>(must(gem::Database::open(argv[++i]))));
@@ -272,7 +275,7 @@ int main(int argc, char** argv) {
                     std::printf("%s: %s\n", s.file.c_str(), line.c_str());
                 }
             }
-            s.scene->renderer().set_visibility_pass(!facet_by_facet);
+            s.scene->renderer().set_visibility_pass(visibility);
             s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
             subjects.push_back(std::move(s));
         }
@@ -326,7 +329,10 @@ int main(int argc, char** argv) {
         "%dx%d, the kiosk's start view, trace (%s fire), moving frames at %d sample%s, stones %s, "
         "median of %d frames in turn\n",
         width, height, exact_fire ? "exact" : "first-order", std::max(1, picture.samples()),
-        picture.samples() > 1 ? "s" : "", facet_by_facet ? "facet by facet" : "by visibility",
+        picture.samples() > 1 ? "s" : "",
+        visibility == gem::gpu::VisibilityPass::off      ? "facet by facet"
+        : visibility == gem::gpu::VisibilityPass::always ? "all by visibility"
+                                                         : "by visibility where it pays",
         frames);
     std::printf(
         "%-20s %8s %7s %9s %9s %9s %9s %9s %9s %10s %10s %10s %10s %9s %9s %11s %12s %8s %13s\n",

@@ -55,7 +55,8 @@ Drawn draw(gpu::FrameRenderer& renderer, const Camera& camera, bool visibility, 
     target.value().bind();
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClear(GL_COLOR_BUFFER_BIT);
-    renderer.set_visibility_pass(visibility);
+    renderer.set_visibility_pass(visibility ? gpu::VisibilityPass::always
+                                            : gpu::VisibilityPass::off);
     gpu::StillFrame frame;
     frame.index = still;
     auto stats = renderer.render(camera, gpu::FrameWait::frame, frame);
@@ -146,12 +147,29 @@ Multisampled draw_multisampled(gpu::FrameRenderer& renderer, const CameraSetting
     auto target = gpu::RenderTarget::make(kWidth, kHeight);
     EXPECT_TRUE(target.ok()) << target.error();
     if (!picture || !target) return {};
-    renderer.set_visibility_pass(visibility);
+    renderer.set_visibility_pass(visibility ? gpu::VisibilityPass::always
+                                            : gpu::VisibilityPass::off);
     auto stats = gpu::draw_picture_frame(renderer, picture.value(), view, framing, false,
                                          gpu::FrameWait::frame, target.value());
     EXPECT_TRUE(stats.ok()) << stats.error();
     if (!stats) return {};
     return {target.value().read(), stats.value().stones_by_visibility};
+}
+
+// One multisampled frame with the renderer's own FrameSetup::visibility_pass: whether its
+// stones went by visibility.
+bool draw_multisampled_as_set(gpu::FrameRenderer& renderer, const CameraSettings& view,
+                              double framing) {
+    gpu::PictureOptions options;
+    options.samples = 4;
+    auto picture = gpu::HdrPicture::make(kWidth, kHeight, options);
+    auto target = gpu::RenderTarget::make(kWidth, kHeight);
+    EXPECT_TRUE(picture.ok() && target.ok());
+    if (!picture || !target) return false;
+    auto stats = gpu::draw_picture_frame(renderer, picture.value(), view, framing, false,
+                                         gpu::FrameWait::frame, target.value());
+    EXPECT_TRUE(stats.ok()) << stats.error();
+    return stats && stats.value().stones_by_visibility;
 }
 
 // The pixels more than one code apart, and the largest difference.
@@ -210,6 +228,10 @@ TEST(GpuVisibility, AMultisampledFrameIsTheFrameShadedFacetByFacet) {
     EXPECT_LE(
         multisampled_both_ways(loose.value(), view, bounding_radius(round.vertices), "round").most,
         1);
+    // As the kiosk chooses (VisibilityPass::where_it_pays): one stone's multisampled frame
+    // goes facet by facet, a piece of several stones' by visibility.
+    loose.value().set_visibility_pass(gpu::VisibilityPass::where_it_pays);
+    EXPECT_FALSE(draw_multisampled_as_set(loose.value(), view, bounding_radius(round.vertices)));
     const Stone heart =
         make_cut(default_cut_params(CutShape::heart), *find_material("ruby")).value();
     auto hearts = make_renderer(nullptr, &heart, studio);
@@ -227,6 +249,8 @@ TEST(GpuVisibility, AMultisampledFrameIsTheFrameShadedFacetByFacet) {
     view.azimuth_deg = 10.0;
     EXPECT_LE(multisampled_both_ways(piece.value(), view, halo.value().radius_mm(), "halo").most,
               1);
+    piece.value().set_visibility_pass(gpu::VisibilityPass::where_it_pays);
+    EXPECT_TRUE(draw_multisampled_as_set(piece.value(), view, halo.value().radius_mm()));
     // After a frame by visibility where the centre stone filled the picture: the samples it
     // no longer covers still hold that frame's stones and facets.
     view.zoom = 6.0;
