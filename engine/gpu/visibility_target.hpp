@@ -34,8 +34,8 @@ class VisibilityTarget {
 
     // Attached as the bound draw framebuffer's second colour attachment, sized and sampled as
     // that framebuffer (the default framebuffer takes none). Not cleared here: a multisampled
-    // one is cleared by each frame (FrameRenderer::render), a single-sample one is read only
-    // where the stencil says the pass wrote it this frame.
+    // one is cleared about each stone by its method (TraceMethod::clear_visibility), a
+    // single-sample one is read only where the stencil says the pass wrote it this frame.
     VisibilityAttachment attach(glm::ivec2 size);
     // Takes it off the bound draw framebuffer again (before the stones' pass reads it).
     void detach() const;

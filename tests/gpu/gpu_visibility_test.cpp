@@ -132,14 +132,16 @@ TEST(GpuVisibility, StonesShadedByVisibilityAreTheStonesShadedFacetByFacet) {
 // the picture is the one drawn facet by facet (each facet's triangle writing its own samples)
 // but for the half-float rounding of the weighed mean: a code at most. The metal writes no
 // stone at the samples it takes; without that, a pixel whose hidden sample showed another facet
-// weighed it (the halo's beads over its stones: 37 pixels up to 160 codes apart).
+// weighed it (the halo's beads over its stones: 37 pixels up to 160 codes apart). The target is
+// cleared about each stone; without that, a sample no stone covers held an earlier frame's
+// (the halo after a closer view of it: 5 pixels up to 79 codes apart).
 struct Multisampled {
     Image image;
     bool by_visibility = false;
 };
 
 Multisampled draw_multisampled(gpu::FrameRenderer& renderer, const CameraSettings& view,
-                               double framing, bool visibility) {
+                               double framing, gpu::VisibilityPass visibility) {
     gpu::PictureOptions options;
     options.samples = 4;
     auto picture = gpu::HdrPicture::make(kWidth, kHeight, options);
@@ -147,29 +149,12 @@ Multisampled draw_multisampled(gpu::FrameRenderer& renderer, const CameraSetting
     auto target = gpu::RenderTarget::make(kWidth, kHeight);
     EXPECT_TRUE(target.ok()) << target.error();
     if (!picture || !target) return {};
-    renderer.set_visibility_pass(visibility ? gpu::VisibilityPass::always
-                                            : gpu::VisibilityPass::off);
+    renderer.set_visibility_pass(visibility);
     auto stats = gpu::draw_picture_frame(renderer, picture.value(), view, framing, false,
                                          gpu::FrameWait::frame, target.value());
     EXPECT_TRUE(stats.ok()) << stats.error();
     if (!stats) return {};
     return {target.value().read(), stats.value().stones_by_visibility};
-}
-
-// One multisampled frame with the renderer's own FrameSetup::visibility_pass: whether its
-// stones went by visibility.
-bool draw_multisampled_as_set(gpu::FrameRenderer& renderer, const CameraSettings& view,
-                              double framing) {
-    gpu::PictureOptions options;
-    options.samples = 4;
-    auto picture = gpu::HdrPicture::make(kWidth, kHeight, options);
-    auto target = gpu::RenderTarget::make(kWidth, kHeight);
-    EXPECT_TRUE(picture.ok() && target.ok());
-    if (!picture || !target) return false;
-    auto stats = gpu::draw_picture_frame(renderer, picture.value(), view, framing, false,
-                                         gpu::FrameWait::frame, target.value());
-    EXPECT_TRUE(stats.ok()) << stats.error();
-    return stats && stats.value().stones_by_visibility;
 }
 
 // The pixels more than one code apart, and the largest difference.
@@ -193,8 +178,10 @@ Apart codes_apart(const Image& a, const Image& b) {
 
 Apart multisampled_both_ways(gpu::FrameRenderer& renderer, const CameraSettings& view,
                              double framing, const std::string& what) {
-    const Multisampled facets = draw_multisampled(renderer, view, framing, false);
-    const Multisampled visible = draw_multisampled(renderer, view, framing, true);
+    const Multisampled facets =
+        draw_multisampled(renderer, view, framing, gpu::VisibilityPass::off);
+    const Multisampled visible =
+        draw_multisampled(renderer, view, framing, gpu::VisibilityPass::always);
     EXPECT_FALSE(facets.by_visibility) << what;
     EXPECT_TRUE(visible.by_visibility) << what;
     const Apart apart = codes_apart(visible.image, facets.image);
@@ -230,8 +217,9 @@ TEST(GpuVisibility, AMultisampledFrameIsTheFrameShadedFacetByFacet) {
         1);
     // As the kiosk chooses (VisibilityPass::where_it_pays): one stone's multisampled frame
     // goes facet by facet, a piece of several stones' by visibility.
-    loose.value().set_visibility_pass(gpu::VisibilityPass::where_it_pays);
-    EXPECT_FALSE(draw_multisampled_as_set(loose.value(), view, bounding_radius(round.vertices)));
+    EXPECT_FALSE(draw_multisampled(loose.value(), view, bounding_radius(round.vertices),
+                                   gpu::VisibilityPass::where_it_pays)
+                     .by_visibility);
     const Stone heart =
         make_cut(default_cut_params(CutShape::heart), *find_material("ruby")).value();
     auto hearts = make_renderer(nullptr, &heart, studio);
@@ -249,8 +237,9 @@ TEST(GpuVisibility, AMultisampledFrameIsTheFrameShadedFacetByFacet) {
     view.azimuth_deg = 10.0;
     EXPECT_LE(multisampled_both_ways(piece.value(), view, halo.value().radius_mm(), "halo").most,
               1);
-    piece.value().set_visibility_pass(gpu::VisibilityPass::where_it_pays);
-    EXPECT_TRUE(draw_multisampled_as_set(piece.value(), view, halo.value().radius_mm()));
+    EXPECT_TRUE(draw_multisampled(piece.value(), view, halo.value().radius_mm(),
+                                  gpu::VisibilityPass::where_it_pays)
+                    .by_visibility);
     // After a frame by visibility where the centre stone filled the picture: the samples it
     // no longer covers still hold that frame's stones and facets.
     view.zoom = 6.0;
