@@ -264,7 +264,7 @@ VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera,
         // no such output); a still view's frames are single samples.
         if (ring_ && ring_->follows_piece(still.index)) return {};
     }
-    return visibility_->attach(glm::ivec2(camera.width(), camera.height()));
+    return visibility_->attach(glm::ivec2(camera.width(), camera.height()), samples);
 }
 
 Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,

@@ -82,8 +82,6 @@ class FrameRenderer {
     // Why a still view's metal and stones do not see their own piece (piece_path.glsl), where
     // they cannot; empty where they do, or there is no metal.
     const std::string& sight_note() const { return sight_note_; }
-    // Why a multisampled frame's stones are shaded facet by facet; empty where they are not.
-    const std::string& visibility_note() const { return visibility_->note(); }
     // Radius about the centre (the stone's, the piece's) that holds everything drawn.
     double scene_radius_mm() const { return scene_radius_mm_; }
     double stone_radius_mm() const { return stone_radius_mm_; }

@@ -13,19 +13,18 @@ int max_integer_samples() {
     return samples;
 }
 
-VisibilityTarget::VisibilityTarget(int max_integer_samples)
-    : max_integer_samples_(max_integer_samples > 1 ? max_integer_samples : 0) {
-    if (max_integer_samples_ == 0) {
-        note_ =
-            "a multisampled frame's stones are shaded facet by facet: this GL has no "
-            "multisampled integer texture (OpenGL ES 3.1) for their visibility pass";
-    }
+std::string multisampled_visibility_note(int max_integer_samples) {
+    if (max_integer_samples >= 2) return {};
+    return "a multisampled frame's stones are shaded facet by facet: this GL has no "
+           "multisampled integer texture (OpenGL ES 3.1) for their visibility pass";
 }
 
-VisibilityAttachment VisibilityTarget::attach(glm::ivec2 size) {
-    GLint framebuffer = 0, samples = 0;
+VisibilityTarget::VisibilityTarget(int max_integer_samples)
+    : max_integer_samples_(max_integer_samples >= 2 ? max_integer_samples : 0) {}
+
+VisibilityAttachment VisibilityTarget::attach(glm::ivec2 size, int samples) {
+    GLint framebuffer = 0;
     glGetIntegerv(GL_DRAW_FRAMEBUFFER_BINDING, &framebuffer);
-    glGetIntegerv(GL_SAMPLES, &samples);
     if (framebuffer == 0) return {};
     if (samples > 0 && (samples > max_integer_samples_ || samples > kMaxSamples)) return {};
     const GLenum target = samples > 0 ? GL_TEXTURE_2D_MULTISAMPLE : GL_TEXTURE_2D;

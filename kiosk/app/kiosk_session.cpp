@@ -18,6 +18,7 @@
 #include "app/start_view.hpp"
 #include "catalogue/catalogue_store.hpp"
 #include "display/open_display.hpp"
+#include "gpu/visibility_target.hpp"
 #include "input/touch_mapping.hpp"
 #include "render/camera.hpp"
 #include "service/log.hpp"
@@ -163,6 +164,10 @@ void KioskSession::try_open_display(double now_s) {
     }
     display_ = std::move(opened).value();
     log_info("display: " + display_->describe() + " on " + display_->context().description());
+    if (const std::string note = gpu::multisampled_visibility_note(gpu::max_integer_samples());
+        !note.empty()) {
+        log_info(note);
+    }
     auto made = make_gpu_objects();
     if (!made) {
         log_error(made.error());
@@ -374,9 +379,6 @@ void KioskSession::rebuild_scene(double now_s) {
     if (!settled.empty()) log_info(scene_->renderer().method_name() + ": " + settled);
     if (const std::string& note = scene_->renderer().sight_note(); !note.empty()) {
         log_error(note);
-    }
-    if (const std::string& note = scene_->renderer().visibility_note(); !note.empty()) {
-        log_info(note);
     }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }
