@@ -9,9 +9,9 @@
 #include <vector>
 
 #include "gpu/egl_context.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
@@ -170,20 +170,19 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
     std::vector<double> stream_ms;
     Image last;
     for (int f = 0; f < o.frames; ++f) {
-        CameraSettings cs = scene.camera;
-        cs.azimuth_deg += step * f;
-        auto camera = Camera::make(cs, framing_mm, scene.width, scene.height);
-        if (!camera) return fail(camera.error());
-        if (o.frames > 1) {
-            // The turntable turns about +y at `step` per frame of a 60 Hz display.
-            const double omega = step * std::numbers::pi / 180.0 * 60.0;
-            r.prepare(camera.value(), {0.0, omega, 0.0});
-        }
+        gpu::FrameView view{.camera = scene.camera, .framing_mm = framing_mm};
+        view.camera.azimuth_deg += step * f;
+        // The turntable turns about +y at `step` per frame of a 60 Hz display: the stone
+        // method prepares the views it reaches.
+        if (o.frames > 1) view.omega = {0.0, step * std::numbers::pi / 180.0 * 60.0, 0.0};
         // One frame into the HDR picture and out through its finishing passes; `still`: the
         // view of the frame before, moved by the picture's sub-pixel jitter.
-        const auto draw = [&](bool still) {
-            return gpu::draw_picture_frame(r, hdr.value(), cs, framing_mm, still,
-                                           gpu::FrameWait::none, target.value());
+        const auto draw = [&](bool still) -> Result<gpu::FrameStats> {
+            hdr.value().begin_frame(still);
+            auto drawn = gpu::compose_frame({.renderer = &r, .view = view, .picture = &hdr.value()},
+                                            target.value());
+            if (!drawn) return Error{drawn.error()};
+            return drawn.value().scene();
         };
         const auto start = std::chrono::steady_clock::now();
         auto stats = draw(false);

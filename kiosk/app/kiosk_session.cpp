@@ -11,13 +11,13 @@
 #include <numbers>
 
 #include "app/catalogue_setup.hpp"
-#include "app/kiosk_frame.hpp"
 #include "app/method_probe_run.hpp"
 #include "app/process_info.hpp"
 #include "app/snapshot.hpp"
 #include "app/start_view.hpp"
 #include "catalogue/catalogue_store.hpp"
 #include "display/open_display.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/visibility_target.hpp"
 #include "input/touch_mapping.hpp"
 #include "render/camera.hpp"
@@ -514,23 +514,20 @@ std::string KioskSession::chosen_name(const ProbeResult& probe) {
     return probe.candidates[probe.choice.index].name;
 }
 
-std::optional<Camera> KioskSession::view_camera(double now_s, glm::dvec3& omega) {
-    auto camera =
-        scene_->camera(gestures_->view(), display_->picture_size(), scene_picture_->jitter_ndc());
-    if (!camera) {
-        log_error("camera: " + camera.error());
-        return std::nullopt;
-    }
+gpu::FrameView KioskSession::frame_view(double now_s) {
+    gpu::FrameView view = scene_->frame_view(gestures_->view(), display_->picture_size());
     // The view direction's rotation since the last frame, as an angular velocity, lets the
     // stone method prepare for the views the turn will reach before it reaches them.
+    const glm::ivec2 size = display_->picture_size();
+    auto camera = Camera::make(view.camera, view.framing_mm, size.x, size.y);
+    if (!camera) return view;  // the composer says why
     const glm::dvec3 forward = camera.value().forward();
-    omega = glm::dvec3(0.0);
     if (last_forward_s_ >= 0.0 && now_s > last_forward_s_) {
-        omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
+        view.omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
     }
     last_forward_ = forward;
     last_forward_s_ = now_s;
-    return camera.value();
+    return view;
 }
 
 Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
@@ -559,14 +556,15 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     last_frame_start_s_ = record.start_s;
     bool stand_in = false;  // a view not yet resident was stood in for (FrameStats::stand_in)
     if (redraw) {
-        glm::dvec3 omega(0.0);
-        std::optional<Camera> camera;
-        if (scene_) camera = view_camera(now_s, omega);
         // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
-        const gpu::FrameWait wait =
-            config_.display.backend != "drm" ? gpu::FrameWait::frame : gpu::FrameWait::none;
-        auto drawn = draw_kiosk_frame(scene_.get(), camera ? &*camera : nullptr, omega, wait,
-                                      *scene_picture_, *picture_);
+        gpu::FrameRequest request{
+            .wait = config_.display.backend != "drm" ? gpu::FrameWait::frame : gpu::FrameWait::none,
+            .picture = &*scene_picture_};
+        if (scene_) {
+            request.renderer = &scene_->renderer();
+            request.view = frame_view(now_s);
+        }
+        auto drawn = gpu::compose_frame(request, *picture_);
         if (!drawn) return Error{drawn.error()};
         if (!drawn.value().scene_error.empty()) log_error(drawn.value().scene_error);
         if (const auto& stats = drawn.value().stats) {

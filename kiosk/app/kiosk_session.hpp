@@ -84,8 +84,8 @@ class KioskSession {
     // Once a still view has its frames or its time: how far it was refined, in one line.
     void log_still_view_settled();
     void start_replay(double now_s);  // once the first frame and the probe's choice are shown
-    // The camera for the gestures' view this frame, and in `omega` how fast the view turns.
-    std::optional<Camera> view_camera(double now_s, glm::dvec3& omega);
+    // The gestures' view this frame, with how fast it turns.
+    gpu::FrameView frame_view(double now_s);
     static bool same_view(const ViewState& a, const ViewState& b);
 
     KioskRun run_;

@@ -5,8 +5,8 @@
 #include <chrono>
 #include <cmath>
 
-#include "app/kiosk_frame.hpp"
 #include "app/process_info.hpp"
+#include "gpu/frame_composer.hpp"
 #include "render/camera.hpp"
 #include "util/elapsed.hpp"
 
@@ -14,11 +14,11 @@ namespace gem::kiosk {
 
 namespace {
 
-Result<Camera> probe_camera(const StoneScene& scene, const ViewState& start, double turn_deg,
-                            glm::ivec2 size) {
+// The probe's view `turn_deg` along its turn from `start`.
+ViewState turned(const ViewState& start, double turn_deg) {
     ViewState view = start;
     view.azimuth_deg += turn_deg;
-    return scene.camera(view, size);
+    return view;
 }
 
 }  // namespace
@@ -61,7 +61,7 @@ Result<std::unique_ptr<MethodProbe>> MethodProbe::start(
     if (first.value()->has_database()) {
         int needed_level = 0;
         const Database& db = first.value()->database();
-        auto camera = probe_camera(*first.value(), start, 0.0, size);
+        auto camera = first.value()->camera(start, size);
         if (camera) {
             needed_level = static_cast<int>(
                 gpu::table_level_for(db, db.camera().field_mm / camera.value().pixel_size()));
@@ -97,7 +97,8 @@ bool MethodProbe::step() {
         last_forward_ = glm::dvec3(0.0);
     }
     const glm::ivec2 size(target_->width(), target_->height());
-    auto camera = probe_camera(*scene_, start_view_, options_.turn_deg_per_frame * frame_, size);
+    const ViewState view = turned(start_view_, options_.turn_deg_per_frame * frame_);
+    auto camera = scene_->camera(view, size);
     if (!camera) {
         finish_candidate();
         return done_;
@@ -115,8 +116,10 @@ bool MethodProbe::step() {
     // The kiosk's own frame, as a screen draws it (no wait inside the frame), then waited for
     // to the end of the GPU's work. Every probe frame is a moving one.
     picture_->begin_frame(false);
-    auto drawn = draw_kiosk_frame(scene_.get(), &camera.value(), omega, gpu::FrameWait::none,
-                                  *picture_, *target_);
+    gpu::FrameView frame_view = scene_->frame_view(view, size);
+    frame_view.omega = omega;
+    auto drawn = gpu::compose_frame(
+        {.renderer = &scene_->renderer(), .view = frame_view, .picture = &*picture_}, *target_);
     const bool finished = drawn && drawn.value().scene_error.empty();
     glFinish();
     const double ms = ms_since(begin);

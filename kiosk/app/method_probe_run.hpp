@@ -1,9 +1,9 @@
 #pragma once
 // The measuring half of render.method = "auto" (method_probe.hpp holds the choice): for the
 // stone on screen, each candidate's scene is built and a few frames are drawn into the probe's
-// own off-screen pictures at the display's size (the kiosk's frame, kiosk_frame.hpp, finishing
-// passes included), along a small turn from the start view so the table method streams and
-// uploads views as it does in use. Each frame is timed to the end of the GPU's work.
+// own off-screen pictures at the display's size (the kiosk's frame, gpu/frame_composer.hpp,
+// finishing passes included), along a small turn from the start view so the table method streams
+// and uploads views as it does in use. Each frame is timed to the end of the GPU's work.
 //
 // The probe runs a frame at a time (step()), between the frames the kiosk shows: the shop's
 // screen shows the stone at once, with the safe choice, and switches to the probe's choice

@@ -178,11 +178,14 @@ Result<std::vector<std::string>> StoneScene::choose_stone_models(glm::ivec2 size
     return lines;
 }
 
-Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size,
-                                  glm::dvec2 jitter_ndc) const {
-    CameraSettings settings = framed_camera(view, framing(size));
-    settings.shift += jitter_ndc;
-    return Camera::make(settings, renderer_->scene_radius_mm(), size.x, size.y);
+gpu::FrameView StoneScene::frame_view(const ViewState& view, glm::ivec2 size) const {
+    return {.camera = framed_camera(view, framing(size)),
+            .framing_mm = renderer_->scene_radius_mm()};
+}
+
+Result<Camera> StoneScene::camera(const ViewState& view, glm::ivec2 size) const {
+    const gpu::FrameView v = frame_view(view, size);
+    return Camera::make(v.camera, v.framing_mm, size.x, size.y);
 }
 
 }  // namespace gem::kiosk

@@ -15,6 +15,7 @@
 
 #include "app/framing.hpp"
 #include "catalogue/catalogue.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "render/environment.hpp"
@@ -65,11 +66,11 @@ class StoneScene {
     const Stone& stone() const;
     bool is_piece() const { return piece_ != nullptr; }
     const std::string& name() const { return name_; }
-    // The camera for `view` in a picture of `size`, framed as framing.hpp says at the start
-    // view (start_view.hpp); view.zoom scales that framing. `jitter_ndc`: a sub-pixel offset of
-    // the frame (HdrPicture::jitter_ndc).
-    Result<Camera> camera(const ViewState& view, glm::ivec2 size,
-                          glm::dvec2 jitter_ndc = glm::dvec2(0.0)) const;
+    // The view a frame composes (gpu/frame_composer.hpp) for `view` in a picture of `size`,
+    // framed as framing.hpp says at the start view (start_view.hpp); view.zoom scales that
+    // framing. camera(): the same view's camera, unmoved by any jitter.
+    gpu::FrameView frame_view(const ViewState& view, glm::ivec2 size) const;
+    Result<Camera> camera(const ViewState& view, glm::ivec2 size) const;
     // A piece's small stones each given the model the start view in a picture of `size` needs
     // (gpu/stone_models.hpp); one log line per distinct stone measured, none for a loose stone.
     Result<std::vector<std::string>> choose_stone_models(glm::ivec2 size);

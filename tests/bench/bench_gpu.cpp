@@ -39,6 +39,8 @@
 #include "trace/intersector.hpp"
 #include "trace/parallel.hpp"
 
+#include "bench_frame.hpp"
+
 namespace {
 
 using Clock = std::chrono::steady_clock;
@@ -92,8 +94,13 @@ struct Case {
     bool by_facet = false;   // without the visibility pass (FrameSetup::visibility_pass)
 };
 
-gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const gem::MetalMesh& ring,
-                       const gem::Stone& stone, int frame) {
+// The view of `frame` (a turn of 1° a frame), prepared for that turn and its tables' views
+// waited for: decoding (the table's) is not shading.
+gem::gpu::FrameView view_for(const View& v, const gem::gpu::FrameRenderer& r,
+                             const gem::MetalMesh& ring, const gem::Stone& stone, int frame) {
+    gem::gpu::FrameView out;
+    out.omega = {0.0, 1.0 * std::numbers::pi / 180.0 * 30.0, 0.0};
+    out.wait_for_views = true;
     if (v.ring) {
         const std::vector<glm::dvec3> points(ring.positions.begin(), ring.positions.end());
         const gem::kiosk::Framing framing =
@@ -101,17 +108,22 @@ gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const ge
                                    {v.width, v.height}, r.scene_radius_mm(), kStoneShare);
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         view.azimuth_deg += 1.0 * frame;
-        return gem::Camera::make(gem::kiosk::framed_camera(view, framing), r.scene_radius_mm(),
-                                 v.width, v.height)
-            .value();
+        out.camera = gem::kiosk::framed_camera(view, framing);
+        // The kiosk frames the whole scene (the ring too).
+        out.framing_mm = r.scene_radius_mm();
+        return out;
     }
-    gem::CameraSettings cs;
-    cs.elevation_deg = v.elevation_deg;
-    cs.azimuth_deg = 1.0 * frame;
-    cs.zoom = v.zoom;
-    // The kiosk frames the whole scene (the ring too); loose stones frame the stone.
-    const double radius = v.ring ? r.scene_radius_mm() : r.stone_radius_mm();
-    return gem::Camera::make(cs, radius, v.width, v.height).value();
+    out.camera.elevation_deg = v.elevation_deg;
+    out.camera.azimuth_deg = 1.0 * frame;
+    out.camera.zoom = v.zoom;
+    out.framing_mm = r.stone_radius_mm();  // loose stones frame the stone
+    return out;
+}
+
+gem::Camera camera_for(const View& v, const gem::gpu::FrameRenderer& r, const gem::MetalMesh& ring,
+                       const gem::Stone& stone, int frame) {
+    const gem::gpu::FrameView view = view_for(v, r, ring, stone, frame);
+    return gem::Camera::make(view.camera, view.framing_mm, v.width, v.height).value();
 }
 
 // Pixels whose centre ray enters the stone, by the exact tracer's entry test.
@@ -164,17 +176,14 @@ gem::gpu::FrameRenderer make_renderer(const Case& c, const View& v, const gem::S
     return std::move(renderer).value();
 }
 
-// One frame of one method, timed: the whole frame and its stone pass alone.
-gem::gpu::FrameStats draw(gem::gpu::FrameRenderer& renderer, const gem::Camera& camera) {
-    // Prepared and waited for: decoding (the table's) is not shading.
-    const double omega = 1.0 * std::numbers::pi / 180.0 * 30.0;
-    renderer.prepare(camera, {0.0, omega, 0.0}, true);
-    auto stats = renderer.render(camera, gem::gpu::FrameWait::passes);
-    if (!stats) {
-        std::fprintf(stderr, "bench_gpu: %s\n", stats.error().c_str());
-        std::exit(1);
-    }
-    return stats.value();
+// One frame of one method straight into `target`, timed: the whole frame and its stone pass
+// alone.
+gem::gpu::FrameStats draw(gem::gpu::FrameRenderer& renderer, const gem::gpu::FrameView& view,
+                          const gem::gpu::RenderTarget& target) {
+    return *gem::bench::compose(
+                "bench_gpu",
+                {.renderer = &renderer, .view = view, .wait = gem::gpu::FrameWait::passes}, target)
+                .stats;
 }
 
 double median(std::vector<double> samples) {
@@ -195,11 +204,10 @@ std::vector<Runner> run_view(const std::vector<Case>& cases, const View& v, cons
         runners.push_back({&c, make_renderer(c, v, stone, db, environment, ring), {}, {}});
     }
     auto target = gem::gpu::RenderTarget::make(v.width, v.height);
-    target.value().bind();
     for (int f = -1; f < frames; ++f) {  // frame −1 warms up (programs, first views)
         for (Runner& r : runners) {
-            const gem::Camera camera = camera_for(v, r.renderer, ring, stone, f);
-            const gem::gpu::FrameStats stats = draw(r.renderer, camera);
+            const gem::gpu::FrameStats stats =
+                draw(r.renderer, view_for(v, r.renderer, ring, stone, f), target.value());
             if (f < 0) continue;
             r.frame_ms.push_back(stats.cpu_ms);
             r.stone_ms.push_back(stats.stone_ms);

@@ -53,6 +53,7 @@
 #include "render/reference_render.hpp"
 #include "util/elapsed.hpp"
 
+#include "bench_frame.hpp"
 #include "bench_support.hpp"
 
 namespace {
@@ -63,6 +64,10 @@ constexpr const char* kProgram = "bench_picture";
 template <class T>
 T must(gem::Result<T> r) {
     return gem::bench::must(kProgram, std::move(r));
+}
+gem::gpu::ComposedFrame compose(const gem::gpu::FrameRequest& request,
+                                const gem::gpu::RenderTarget& target) {
+    return gem::bench::compose(kProgram, request, target);
 }
 
 using gem::bench::median;
@@ -126,27 +131,22 @@ struct PassCosts {
     double finishing() const { return resolve + glare + tone + present; }
 };
 
-// One frame of `view` through `hdr` as the kiosk draws it: begun (`still` or moving), moved by
-// the picture's jitter, bound around the piece (the studio's background is one colour all
-// round the turn) and cleared to the kiosk's surround, drawn (a still frame traced as one
-// where `as_still`, else as a moving frame) and finished into `picture`.
-gem::gpu::FrameStats draw_view(gem::gpu::FrameRenderer& renderer,
-                               const gem::kiosk::Framing& framing,
-                               const gem::kiosk::ViewState& view, bool still, bool as_still,
-                               gem::gpu::HdrPicture& hdr, const gem::gpu::RenderTarget& picture,
-                               gem::gpu::FrameWait wait, gem::gpu::FinishTimes* times = nullptr) {
+// One frame of `view` through `hdr` as the kiosk composes it, begun `still` or moving, its scene
+// traced as a still frame where `as_still`, else as a moving frame.
+gem::gpu::ComposedFrame draw_view(gem::gpu::FrameRenderer& renderer,
+                                  const gem::kiosk::Framing& framing,
+                                  const gem::kiosk::ViewState& view, bool still, bool as_still,
+                                  gem::gpu::HdrPicture& hdr, const gem::gpu::RenderTarget& picture,
+                                  gem::gpu::FrameWait wait) {
     hdr.begin_frame(still);
-    auto cs = gem::kiosk::framed_camera(view, framing);
-    cs.shift += hdr.jitter_ndc();
-    const auto camera =
-        must(gem::Camera::make(cs, renderer.scene_radius_mm(), picture.width(), picture.height()));
-    hdr.bind(renderer.cover(camera));
-    glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-    const gem::gpu::FrameStats drawn =
-        must(renderer.render(camera, wait, as_still ? hdr.still_frame() : gem::gpu::StillFrame{}));
-    must(hdr.finish(picture, times));
-    return drawn;
+    gem::gpu::FrameRequest request{
+        .renderer = &renderer,
+        .view = gem::gpu::FrameView{.camera = gem::kiosk::framed_camera(view, framing),
+                                    .framing_mm = renderer.scene_radius_mm()},
+        .wait = wait,
+        .picture = &hdr};
+    if (!as_still) request.still = gem::gpu::StillFrame{};
+    return compose(request, picture);
 }
 
 PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
@@ -161,10 +161,11 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         view.zoom = zoom;
         // Odd frames still (the running mean's pass), even ones turned.
         view.azimuth_deg += (f / 2) * 1.0;
-        gem::gpu::FinishTimes t;
         // Its still frames traced as moving ones: what the running mean's pass adds is timed.
-        const gem::gpu::FrameStats drawn = draw_view(renderer, framing, view, f % 2 == 1, false,
-                                                     hdr, picture, gem::gpu::FrameWait::passes, &t);
+        const gem::gpu::ComposedFrame frame = draw_view(renderer, framing, view, f % 2 == 1, false,
+                                                        hdr, picture, gem::gpu::FrameWait::passes);
+        const gem::gpu::FrameStats& drawn = *frame.stats;
+        const gem::gpu::FinishTimes& t = frame.finish;
         const double present_ms = time_present(pass, picture, screen, hdr.target_region());
         if (f < 0) continue;
         scene.push_back(drawn.cpu_ms);
@@ -294,14 +295,13 @@ Frames gpu_frames(const gem::Stone& stone, const gem::Environment& environment, 
         const int repeats = count == 1 ? o.still_frames : 1;
         for (int r = 0; r < repeats; ++r) {
             hdr.begin_frame(count == 1 && o.still_frames > 1);
-            gem::CameraSettings cs = turned(f);
-            cs.shift += hdr.jitter_ndc();
-            const auto camera =
-                must(gem::Camera::make(cs, gem::bounding_radius(stone.vertices), size, size));
-            hdr.bind();
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-            must(renderer.render(camera, gem::gpu::FrameWait::frame));
-            must(hdr.finish(picture));
+            compose(
+                {.renderer = &renderer,
+                 .view = gem::gpu::FrameView{.camera = turned(f),
+                                             .framing_mm = gem::bounding_radius(stone.vertices)},
+                 .wait = gem::gpu::FrameWait::frame,
+                 .picture = &hdr},
+                picture);
         }
         add_frame(out, picture.read());
     }

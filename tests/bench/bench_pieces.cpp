@@ -51,6 +51,7 @@
 #include "tables/sections.hpp"
 #include "trace/intersector.hpp"
 
+#include "bench_frame.hpp"
 #include "bench_support.hpp"
 
 namespace {
@@ -62,6 +63,10 @@ constexpr const char* kProgram = "bench_pieces";
 template <class T>
 T must(gem::Result<T> r) {
     return gem::bench::must(kProgram, std::move(r));
+}
+gem::gpu::ComposedFrame compose(const gem::gpu::FrameRequest& request,
+                                const gem::gpu::RenderTarget& target) {
+    return gem::bench::compose(kProgram, request, target);
 }
 
 using gem::bench::median;
@@ -171,7 +176,8 @@ struct Subject {
     bool tabled = false;  // a kind drawn from its tables (--tables)
     std::shared_ptr<const gem::Piece> piece;
     std::unique_ptr<gem::kiosk::StoneScene> scene;
-    gem::Camera camera;
+    gem::gpu::FrameView view;  // the start view (its tables' views waited for)
+    gem::Camera camera;        // ... its camera
     std::vector<double> frame_ms;
     std::vector<double> stone_ms;
     std::vector<double> metal_ms;
@@ -276,35 +282,38 @@ int main(int argc, char** argv) {
                 }
             }
             s.scene->renderer().set_visibility_pass(visibility);
+            s.view = s.scene->frame_view(gem::kiosk::kStartView, {width, height});
+            s.view.wait_for_views = true;
             s.camera = must(s.scene->camera(gem::kiosk::kStartView, {width, height}));
             subjects.push_back(std::move(s));
         }
     }
-    target.bind();
-    for (Subject& s : subjects) s.scene->renderer().prepare(s.camera, glm::dvec3(0.0), true);
     for (int f = -1; f < frames; ++f) {
         for (Subject& s : subjects) {
-            if (samples > 1) {
-                picture.begin_frame(false);
-                picture.bind();
-            } else {
-                target.bind();
-            }
-            glClearColor(0.02f, 0.02f, 0.02f, 1.0f);
-            glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
+            // A moving frame, into the multisampled picture as the kiosk's, or straight into the
+            // target at one sample; then a still view's frame, single samples.
+            if (samples > 1) picture.begin_frame(false);
             const gem::gpu::FrameStats stats =
-                must(s.scene->renderer().render(s.camera, gem::gpu::FrameWait::passes));
+                *compose({.renderer = &s.scene->renderer(),
+                          .view = s.view,
+                          .wait = gem::gpu::FrameWait::passes,
+                          .picture = samples > 1 ? &picture : nullptr},
+                         target)
+                     .stats;
             if (f < 0) continue;  // the first frame compiles and uploads
             s.frame_ms.push_back(stats.cpu_ms);
             s.stone_ms.push_back(stats.stone_ms);
             s.metal_ms.push_back(stats.metal_ms);
             s.submit_ms.push_back(stats.stone_submit_ms);
             s.depth_ms.push_back(stats.stone_depth_ms);
-            target.bind();
             gem::gpu::StillFrame still;
             still.index = f + 1;
-            const gem::gpu::FrameStats still_stats =
-                must(s.scene->renderer().render(s.camera, gem::gpu::FrameWait::passes, still));
+            const gem::gpu::FrameStats still_stats = *compose({.renderer = &s.scene->renderer(),
+                                                               .view = s.view,
+                                                               .wait = gem::gpu::FrameWait::passes,
+                                                               .still = still},
+                                                              target)
+                                                          .stats;
             s.still_metal_ms.push_back(still_stats.metal_ms);
             s.still_stone_ms.push_back(still_stats.stone_ms);
         }

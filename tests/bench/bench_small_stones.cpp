@@ -21,6 +21,7 @@
 #include "render/image_error.hpp"
 #include "render/reference_render.hpp"
 
+#include "bench_frame.hpp"
 #include "bench_support.hpp"
 
 namespace {
@@ -91,15 +92,15 @@ int main(int argc, char** argv) {
             settings.spectral = true;
             settings.background_is_environment = false;
             const gem::Image reference = must(gem::render_reference(stone, environment, settings));
-            const gem::Camera camera = must(gem::Camera::make(
-                settings.camera, gem::bounding_radius(stone.vertices), size, size));
+            const gem::gpu::FrameView view{.camera = settings.camera,
+                                           .framing_mm = gem::bounding_radius(stone.vertices)};
             for (std::size_t f = 0; f < fires.size(); ++f) {
                 for (std::size_t d = 0; d < depths.size(); ++d) {
                     renderer.set_model(0, {depths[d], fires[f]});
-                    target.bind();
-                    glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
-                    glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
-                    must(renderer.render(camera, gem::gpu::FrameWait::frame));
+                    gem::bench::compose(
+                        kProgram,
+                        {.renderer = &renderer, .view = view, .wait = gem::gpu::FrameWait::frame},
+                        target);
                     // The stone's pixels are the reference's: the GPU's background is opaque.
                     gem::Image drawn = target.read();
                     for (std::size_t i = 0; i < drawn.pixels.size(); ++i) {

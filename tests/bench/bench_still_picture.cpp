@@ -47,9 +47,9 @@
 #include <vector>
 
 #include "gpu/egl_context.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "render/image_error.hpp"
 #include "render/reference_render.hpp"
@@ -57,6 +57,7 @@
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 
+#include "bench_frame.hpp"
 #include "bench_support.hpp"
 
 namespace {
@@ -65,6 +66,10 @@ constexpr const char* kProgram = "bench_still_picture";
 template <class T>
 T must(gem::Result<T> r) {
     return gem::bench::must(kProgram, std::move(r));
+}
+gem::gpu::ComposedFrame compose(const gem::gpu::FrameRequest& request,
+                                const gem::gpu::RenderTarget& target) {
+    return gem::bench::compose(kProgram, request, target);
 }
 using gem::gpu::TraceDispersion;
 
@@ -167,8 +172,9 @@ gem::Image gpu_picture(const StillScene& s, const Variant& v, int depth, double 
                                                 .still_frames = v.still_frames,
                                                 .spectral = spectral,
                                                 .still_depth = v.still_depth}));
-    must(gem::gpu::draw_still_picture(renderer, hdr, scene.camera, renderer.stone_radius_mm(),
-                                      target, ms));
+    must(gem::gpu::draw_still_picture(
+        renderer, hdr, {.camera = scene.camera, .framing_mm = renderer.stone_radius_mm()}, target,
+        ms));
     return target.read();
 }
 
@@ -204,9 +210,15 @@ void still_view_by_frames(const StillScene& s, const gem::Image& reference_displ
     double ms = 0.0;
     std::size_t next = 0;
     for (int frame = 1; frame <= checkpoints.back(); ++frame) {
-        auto drawn = must(gem::gpu::draw_picture_frame(renderer, hdr, scene.camera,
-                                                       renderer.stone_radius_mm(), true,
-                                                       gem::gpu::FrameWait::frame, target));
+        hdr.begin_frame(true);
+        const gem::gpu::FrameStats drawn =
+            *compose({.renderer = &renderer,
+                      .view = gem::gpu::FrameView{.camera = scene.camera,
+                                                  .framing_mm = renderer.stone_radius_mm()},
+                      .wait = gem::gpu::FrameWait::frame,
+                      .picture = &hdr},
+                     target)
+                 .stats;
         ms += drawn.cpu_ms;
         if (frame != checkpoints[next]) continue;
         const gem::ImageError e = error_of(target.read(), reference_display);
@@ -235,14 +247,17 @@ void frame_costs(const StillScene& s, int frames, int depth, double min_weight) 
         for (int k = 0; k < 2; ++k) {
             hdr.begin_frame(true);
             if (hdr.settled()) hdr.begin_frame(false);  // a new still view: frames to average
-            const auto camera =
-                must(gem::Camera::make(scene.camera, renderer.stone_radius_mm(), s.size, s.size));
-            hdr.bind();
             // A still frame drawn with its wavelengths (spectral) or without (exact fire).
             gem::gpu::StillFrame still = hdr.still_frame();
             if (k == 1) still.wavelengths = nullptr;
-            ms[k] = must(renderer.render(camera, gem::gpu::FrameWait::frame, still)).cpu_ms;
-            must(hdr.finish(target));
+            ms[k] = compose({.renderer = &renderer,
+                             .view = gem::gpu::FrameView{.camera = scene.camera,
+                                                         .framing_mm = renderer.stone_radius_mm()},
+                             .wait = gem::gpu::FrameWait::frame,
+                             .picture = &hdr,
+                             .still = still},
+                            target)
+                        .stats->cpu_ms;
         }
         if (f < 0) continue;  // the programs' first use
         spectral.push_back(ms[0]);

@@ -11,10 +11,10 @@
 #include <cstdlib>
 
 #include "geometry/cuts.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu/ring_mesh.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/colour.hpp"
@@ -100,11 +100,15 @@ TEST(GpuPictureCover, AroundThePieceEachFrameIsThePictureDrawnWhole) {
                 camera.zoom = step.zoom;
                 camera.shift = step.shift;
                 const double radius = renderer.value().scene_radius_mm();
-                // The cover's picture through draw_picture_frame; the whole one bound without it.
-                ASSERT_TRUE(gpu::draw_picture_frame(renderer.value(), covered.value(), camera,
-                                                    radius, step.still, gpu::FrameWait::frame,
-                                                    covered_target.value())
-                                .ok());
+                // The cover's picture through the composer; the whole one bound without it.
+                covered.value().begin_frame(step.still);
+                auto composed = gpu::compose_frame(
+                    {.renderer = &renderer.value(),
+                     .view = gpu::FrameView{.camera = camera, .framing_mm = radius},
+                     .wait = gpu::FrameWait::frame,
+                     .picture = &covered.value()},
+                    covered_target.value());
+                ASSERT_TRUE(composed.ok() && composed.value().scene().ok());
                 whole.value().begin_frame(step.still);
                 CameraSettings jittered = camera;
                 jittered.shift += whole.value().jitter_ndc();

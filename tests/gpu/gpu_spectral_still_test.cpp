@@ -6,10 +6,10 @@
 #include <vector>
 
 #include "geometry/cuts.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
 #include "render/image_error.hpp"
@@ -62,8 +62,9 @@ Result<Image> still_picture(const Stone& stone, gpu::TraceDispersion fire,
                                       .spectral = fire == gpu::TraceDispersion::spectral,
                                       .still_depth = still_depth});
     if (!hdr) return Error{hdr.error()};
-    auto drawn = gpu::draw_still_picture(renderer.value(), hdr.value(), view(),
-                                         renderer.value().stone_radius_mm(), target.value());
+    auto drawn = gpu::draw_still_picture(
+        renderer.value(), hdr.value(),
+        {.camera = view(), .framing_mm = renderer.value().stone_radius_mm()}, target.value());
     if (!drawn) return Error{drawn.error()};
     return target.value().read();
 }

@@ -14,10 +14,10 @@
 #include <filesystem>
 
 #include "geometry/cuts.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/visibility_target.hpp"
 #include "gpu_test_support.hpp"
@@ -150,8 +150,16 @@ Multisampled draw_multisampled(gpu::FrameRenderer& renderer, const CameraSetting
     EXPECT_TRUE(target.ok()) << target.error();
     if (!picture || !target) return {};
     renderer.set_visibility_pass(visibility);
-    auto stats = gpu::draw_picture_frame(renderer, picture.value(), view, framing, false,
-                                         gpu::FrameWait::frame, target.value());
+    picture.value().begin_frame(false);
+    auto composed =
+        gpu::compose_frame({.renderer = &renderer,
+                            .view = gpu::FrameView{.camera = view, .framing_mm = framing},
+                            .wait = gpu::FrameWait::frame,
+                            .picture = &picture.value()},
+                           target.value());
+    EXPECT_TRUE(composed.ok()) << composed.error();
+    if (!composed) return {};
+    auto stats = composed.value().scene();
     EXPECT_TRUE(stats.ok()) << stats.error();
     if (!stats) return {};
     return {target.value().read(), stats.value().stones_by_visibility};

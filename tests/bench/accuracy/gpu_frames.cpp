@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/environment_cube.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/ring_renderer.hpp"
@@ -45,16 +46,21 @@ Result<std::vector<GpuFrame>> render_gpu(const Scene& scene, const Environment& 
     if (!renderer) return Error{renderer.error()};
     auto target = gpu::RenderTarget::make(image, image);
     if (!target) return Error{target.error()};
-    target.value().bind();
     std::vector<GpuFrame> out;
     for (const glm::dvec3& view : views) {
-        auto camera = Camera::make(frame_camera(scene.stone, view, image),
-                                   renderer.value().stone_radius_mm(), image, image);
-        if (!camera) return Error{camera.error()};
+        // The stone method's own pixels, straight into the target (no picture to finish).
+        const gpu::FrameRequest request{
+            .renderer = &renderer.value(),
+            .view = gpu::FrameView{.camera = frame_camera(scene.stone, view, image),
+                                   .framing_mm = renderer.value().stone_radius_mm(),
+                                   .wait_for_views = true},
+            .wait = gpu::FrameWait::frame};
         GpuFrame frame;
         std::vector<double> ms;
         for (int f = -1; f < frames; ++f) {  // frame −1: program, textures, first decode
-            auto stats = renderer.value().render(camera.value(), gem::gpu::FrameWait::frame);
+            auto composed = gpu::compose_frame(request, target.value());
+            if (!composed) return Error{composed.error()};
+            auto stats = composed.value().scene();
             if (!stats) return Error{stats.error()};
             if (f < 0) continue;
             ms.push_back(stats.value().cpu_ms);

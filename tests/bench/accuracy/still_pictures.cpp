@@ -2,9 +2,9 @@
 
 #include <optional>
 
+#include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/picture_frame.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu_frames.hpp"
 #include "reference_images.hpp"
@@ -71,13 +71,19 @@ Result<bool> still_rows(const Scene& scene, const Environment& environment, cons
                                               .still_depth = p.depth});
         if (!picture) return Error{picture.error()};
         // The programs' first use is not the still picture's cost.
-        auto warm =
-            gpu::draw_picture_frame(*renderer, picture.value(), camera, renderer->stone_radius_mm(),
-                                    false, gpu::FrameWait::frame, target.value());
+        const gpu::FrameView frame_view{.camera = camera,
+                                        .framing_mm = renderer->stone_radius_mm()};
+        picture.value().begin_frame(false);
+        auto warm = gpu::compose_frame({.renderer = &*renderer,
+                                        .view = frame_view,
+                                        .wait = gpu::FrameWait::frame,
+                                        .picture = &picture.value()},
+                                       target.value());
         if (!warm) return Error{warm.error()};
+        if (auto drawn = warm.value().scene(); !drawn) return Error{drawn.error()};
         double ms = 0.0;
-        auto drawn = gpu::draw_still_picture(*renderer, picture.value(), camera,
-                                             renderer->stone_radius_mm(), target.value(), &ms);
+        auto drawn =
+            gpu::draw_still_picture(*renderer, picture.value(), frame_view, target.value(), &ms);
         if (!drawn) return Error{drawn.error()};
         Row row;
         row.study = "still";

@@ -14,13 +14,13 @@
 #include <memory>
 #include <sstream>
 
-#include "app/kiosk_frame.hpp"
 #include "app/picture_choice.hpp"
 #include "app/scene_selection.hpp"
 #include "app/start_view.hpp"
 #include "app/stone_scene.hpp"
 #include "catalogue/validate.hpp"
 #include "gpu/egl_context.hpp"
+#include "gpu/frame_composer.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "kiosk_process.hpp"
@@ -238,13 +238,14 @@ Result<Image> reference_picture(const fs::path& catalogue, const kiosk::ViewStat
     gpu::HdrPicture& picture = scene_picture.value();
     for (int frame = 0; frame < options.still_frames; ++frame) {
         picture.begin_frame(true);
-        auto camera = scene.value()->camera(view, {kWidth, kHeight}, picture.jitter_ndc());
-        if (!camera) return Error{camera.error()};
-        // The kiosk's own frame (app/kiosk_frame.hpp), still: no turn to prepare for.
-        auto drawn = kiosk::draw_kiosk_frame(scene.value().get(), &camera.value(), glm::dvec3(0.0),
-                                             gpu::FrameWait::frame, picture, target.value());
+        // The kiosk's own frame (gpu/frame_composer.hpp), still: no turn to prepare for.
+        auto drawn = gpu::compose_frame({.renderer = &scene.value()->renderer(),
+                                         .view = scene.value()->frame_view(view, {kWidth, kHeight}),
+                                         .wait = gpu::FrameWait::frame,
+                                         .picture = &picture},
+                                        target.value());
         if (!drawn) return Error{drawn.error()};
-        if (!drawn.value().scene_error.empty()) return Error{drawn.value().scene_error};
+        if (auto shown = drawn.value().scene(); !shown) return Error{shown.error()};
     }
     return target.value().read();
 }
