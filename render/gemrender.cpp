@@ -11,12 +11,13 @@
 
 #include <CLI/CLI.hpp>
 
+#include "cpu/reference_render.hpp"
+#include "cpu/scene_settings.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu_render.hpp"
+#include "picture/image.hpp"
+#include "picture/tone_map.hpp"
 #include "piece/piece_file.hpp"
-#include "render/image.hpp"
-#include "render/reference_render.hpp"
-#include "render/tone_map.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 

@@ -8,18 +8,19 @@
 #include <optional>
 #include <vector>
 
+#include "cpu/scene_settings.hpp"
+#include "gemdb/sections.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
+#include "picture/image.hpp"
 #include "piece/metal.hpp"
 #include "piece/metal_obj.hpp"
-#include "render/image.hpp"
+#include "piece/ring_mesh.hpp"
 #include "scene/scene_build.hpp"
-#include "tables/sections.hpp"
 
 namespace gem {
 namespace {
@@ -127,11 +128,11 @@ int render_gpu(const Scene& scene, const GpuRenderOptions& o) {
         const Stone& stone = method->needs_database ? setup.database->stone() : setup.stone;
         Result<MetalMesh> made = Error{""};
         if (o.ring == "parametric") {
-            gpu::RingParams params;
+            RingParams params;
             params.metal = *metal;
-            made = gpu::make_ring(params, stone);
+            made = make_ring(params, stone);
         } else {
-            made = load_metal_obj(o.ring, *metal, gpu::RingParams{}.roughness);
+            made = load_metal_obj(o.ring, *metal, RingParams{}.roughness);
         }
         if (!made) return fail(made.error());
         ring = std::move(made).value();

@@ -6,8 +6,8 @@
 #include <string>
 #include <vector>
 
+#include "picture/tone_map.hpp"
 #include "piece/piece.hpp"
-#include "render/tone_map.hpp"
 #include "scene/scene.hpp"
 
 namespace gem {

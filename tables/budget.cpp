@@ -7,10 +7,10 @@
 #include <map>
 #include <numbers>
 
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
+#include "cpu/reference_render.hpp"
+#include "gemdb/view_grid.hpp"
+#include "picture/image_error.hpp"
 #include "scene/scene.hpp"
-#include "tables/view_grid.hpp"
 #include "view_trace.hpp"
 
 namespace gem::tables {

@@ -3,7 +3,7 @@
 // smallest level, shallowest depth, highest weight threshold, dispersion off) for a stone
 // shown a stated number of pixels across, under two stated budgets:
 //
-// - The picture: the mean CIEDE2000 over the stone's pixels (render/image_error.hpp) of what
+// - The picture: the mean CIEDE2000 over the stone's pixels (picture/image_error.hpp) of what
 //   a table shows at a stored direction, against the exact picture. It is measured, not
 //   modelled: for a few pilot views the exact CPU renderer draws what a table built with the
 //   candidate parameters holds (traced at the candidate level, depth and threshold, spectral
@@ -30,8 +30,8 @@
 #include <string>
 #include <vector>
 
+#include "gemdb/database_types.hpp"
 #include "geometry/stone.hpp"
-#include "tables/database_types.hpp"
 #include "util/result.hpp"
 
 namespace gem::tables {

@@ -8,12 +8,12 @@
 
 #include "budget.hpp"
 #include "commands.hpp"
+#include "gemdb/view_grid.hpp"
 #include "piece/stone_shape.hpp"
 #include "process_limits.hpp"
 #include "progress.hpp"
 #include "scene/stone_file.hpp"
 #include "table_build.hpp"
-#include "tables/view_grid.hpp"
 #include "trace/parallel.hpp"
 
 namespace gem::tables {

@@ -14,8 +14,8 @@
 #include <system_error>
 #include <vector>
 
-#include "catalogue_files.hpp"
 #include "commands.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "scene/stone_file.hpp"
 #include "util/atomic_file.hpp"
 

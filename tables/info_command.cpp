@@ -5,7 +5,7 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "tables/reader.hpp"
+#include "gemdb/reader.hpp"
 
 namespace gem::tables {
 

@@ -6,11 +6,11 @@
 #include <numbers>
 
 #include "commands.hpp"
-#include "render/environment.hpp"
-#include "render/image.hpp"
-#include "render/shading.hpp"
+#include "gemdb/reader.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 #include "scene/scene.hpp"
-#include "tables/reader.hpp"
+#include "scene/shading.hpp"
 
 namespace gem::tables {
 
@@ -69,7 +69,7 @@ int run_inspect(const InspectOptions& o) {
                     std::to_string(db.level_count() - 1) + ")");
     }
     const auto level = static_cast<std::uint32_t>(o.level < 0 ? db.level_count() - 1 : o.level);
-    // Azimuth about +y from +z toward +x, elevation above the girdle plane (render/camera.hpp).
+    // Azimuth about +y from +z toward +x, elevation above the girdle plane (picture/camera.hpp).
     const double az = o.azimuth_deg * kDegree;
     const double el = o.elevation_deg * kDegree;
     const glm::dvec3 asked{std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az)};

@@ -17,8 +17,8 @@
 
 #include <toml++/toml.h>
 
-#include "catalogue_files.hpp"
 #include "commands.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "run_program.hpp"
 #include "util/atomic_file.hpp"
 

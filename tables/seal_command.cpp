@@ -1,5 +1,5 @@
 // gemtables seal: a catalogue's manifest names every other file with its BLAKE2b digest
-// (catalogue_files.hpp), and is signed with the chain's minisign key, so that a kiosk that
+// (delivery/catalogue_files.hpp), and is signed with the chain's minisign key, so that a kiosk that
 // trusts the key shows exactly these files. Signing runs the minisign tool itself: a chain
 // keeps its secret key where minisign keeps it, encrypted with a password that minisign asks
 // for on the terminal.
@@ -8,8 +8,8 @@
 #include <string>
 #include <system_error>
 
-#include "catalogue_files.hpp"
 #include "commands.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "run_program.hpp"
 
 namespace gem::tables {

@@ -6,8 +6,8 @@
 #include <filesystem>
 #include <functional>
 
+#include "gemdb/writer.hpp"
 #include "geometry/stone.hpp"
-#include "tables/writer.hpp"
 #include "util/result.hpp"
 
 namespace gem::tables {

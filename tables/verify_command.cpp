@@ -1,6 +1,6 @@
 // gemtables verify: every checksum, then a random sample of pixels re-traced with the exact
 // tracer and compared with what the database stores, against the format's quantisation
-// bounds (tables/quantise.hpp).
+// bounds (gemdb/quantise.hpp).
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -8,8 +8,8 @@
 #include <vector>
 
 #include "commands.hpp"
-#include "tables/quantise.hpp"
-#include "tables/reader.hpp"
+#include "gemdb/quantise.hpp"
+#include "gemdb/reader.hpp"
 #include "view_trace.hpp"
 
 namespace gem::tables {

@@ -2,7 +2,7 @@
 
 #include <algorithm>
 
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 
 namespace gem::tables {
 

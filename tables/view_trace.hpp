@@ -6,8 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "gemdb/database_types.hpp"
 #include "geometry/stone.hpp"
-#include "tables/database_types.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem::tables {

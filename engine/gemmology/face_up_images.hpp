@@ -11,7 +11,7 @@
 //    black stage.
 
 #include "gemmology/face_up.hpp"
-#include "render/image.hpp"
+#include "picture/image.hpp"
 
 namespace gem {
 

@@ -1,5 +1,8 @@
 #include "geometry/stone.hpp"
 
+#include <algorithm>
+#include <cmath>
+
 namespace gem {
 
 const char* to_string(FacetKind kind) {
@@ -18,6 +21,12 @@ const char* to_string(FacetKind kind) {
             return "other";
     }
     return "other";
+}
+
+double bounding_radius(const std::vector<glm::dvec3>& vertices) {
+    double r2 = 0.0;
+    for (const glm::dvec3& v : vertices) r2 = std::max(r2, glm::dot(v, v));
+    return std::sqrt(r2);
 }
 
 }  // namespace gem

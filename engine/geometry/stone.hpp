@@ -27,6 +27,9 @@ enum class FacetKind : std::uint8_t { table, crown, girdle, pavilion, culet, oth
 
 const char* to_string(FacetKind kind);
 
+// Radius of the smallest origin-centred sphere holding all of the given points.
+double bounding_radius(const std::vector<glm::dvec3>& vertices);
+
 struct Facet {
     Plane plane;
     std::vector<std::uint32_t> loop;  // vertex indices, counter-clockwise seen from outside

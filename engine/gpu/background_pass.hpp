@@ -8,7 +8,7 @@
 
 #include "gpu/environment_cube.hpp"
 #include "gpu/program.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

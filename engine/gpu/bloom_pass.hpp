@@ -28,7 +28,7 @@
 namespace gem::gpu {
 
 // Where the glare is cut: around a piece on a flat `background`, beyond the pixels where the
-// glare, mixed in at `share`, moves the picture's radiance by `unseen` (render/tone_map.hpp:
+// glare, mixed in at `share`, moves the picture's radiance by `unseen` (picture/tone_map.hpp:
 // unseen_change()) or more in some channel: there it moves no 8-bit code by half a step.
 struct GlareCut {
     glm::vec3 background{0.0f};

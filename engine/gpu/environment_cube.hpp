@@ -10,7 +10,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl_handles.hpp"
-#include "render/environment.hpp"
+#include "scene/environment.hpp"
 #include "util/cube_faces.hpp"
 #include "util/result.hpp"
 

@@ -23,7 +23,7 @@
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

@@ -8,8 +8,8 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/phong_method.hpp"
 #include "gpu/piece_tables.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "gpu/ring_renderer.hpp"
+#include "piece/ring_mesh.hpp"
 #include "piece/sight_groups.hpp"
 #include "util/elapsed.hpp"
 

@@ -20,7 +20,7 @@
 #include "gpu/visibility_target.hpp"
 #include "piece/metal_mesh.hpp"
 #include "piece/piece.hpp"
-#include "render/environment.hpp"
+#include "scene/environment.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
 

@@ -12,8 +12,8 @@
 #include "gpu/trace_method.hpp"
 #include "piece/metal_mesh.hpp"
 #include "piece/piece.hpp"
-#include "render/environment.hpp"
-#include "render/shading.hpp"
+#include "scene/environment.hpp"
+#include "scene/shading.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem::gpu {

@@ -10,9 +10,9 @@
 #include "gpu/program_variants.hpp"
 #include "gpu/visibility_target.hpp"
 #include "optics/spectrum.hpp"
+#include "picture/camera.hpp"
 #include "piece/placement.hpp"
-#include "render/camera.hpp"
-#include "render/shading.hpp"
+#include "scene/shading.hpp"
 
 namespace gem::gpu {
 

@@ -2,7 +2,7 @@
 // The picture as the scene is drawn into it, before the display: linear radiance in RGBA16F
 // (highlights above 1 kept), multisampled, with a depth buffer. finish() resolves the
 // samples, spreads the glare (bloom_pass.hpp) and applies the exposure and tone curve
-// (render/tone_map.hpp) into a display picture (render_target.hpp), which the kiosk presents
+// (picture/tone_map.hpp) into a display picture (render_target.hpp), which the kiosk presents
 // and snapshots and gemrender writes.
 //
 // Where the GPU cannot render RGBA16F (ES 3.0 without EXT_color_buffer_half_float) the scene
@@ -48,7 +48,7 @@
 #include "gpu/still_bands.hpp"
 #include "gpu/still_schedule.hpp"
 #include "optics/spectrum.hpp"
-#include "render/tone_map.hpp"
+#include "picture/tone_map.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

@@ -3,8 +3,8 @@
 #include <numbers>
 #include <string>
 
+#include "gemdb/sections.hpp"
 #include "gpu/table_method.hpp"
-#include "tables/sections.hpp"
 
 namespace gem::gpu {
 

@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gpu/program.hpp"
-#include "render/lights.hpp"
+#include "scene/lights.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

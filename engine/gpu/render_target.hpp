@@ -5,7 +5,7 @@
 // top row first.
 
 #include "gpu/gl_handles.hpp"
-#include "render/image.hpp"
+#include "picture/image.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

@@ -12,7 +12,7 @@
 #include "gpu/program_catalog.hpp"
 #include "gpu/visibility_target.hpp"
 #include "optics/microfacet.hpp"
-#include "render/lights.hpp"
+#include "scene/lights.hpp"
 
 namespace gem::gpu {
 namespace {

@@ -15,9 +15,9 @@
 #include "gpu/piece_sight.hpp"
 #include "gpu/program.hpp"
 #include "gpu/program_variants.hpp"
-#include "gpu/ring_mesh.hpp"
-#include "render/camera.hpp"
-#include "render/shading.hpp"
+#include "picture/camera.hpp"
+#include "piece/ring_mesh.hpp"
+#include "scene/shading.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

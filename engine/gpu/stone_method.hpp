@@ -19,7 +19,7 @@
 #include "geometry/stone.hpp"
 #include "gpu/frame_setup.hpp"
 #include "gpu/frame_uniforms.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

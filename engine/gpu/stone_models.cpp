@@ -9,8 +9,8 @@
 
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/render_target.hpp"
+#include "picture/image_error.hpp"
 #include "piece/stone_shape.hpp"
-#include "render/image_error.hpp"
 
 namespace gem::gpu {
 

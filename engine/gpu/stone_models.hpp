@@ -15,7 +15,7 @@
 #include <vector>
 
 #include "gpu/frame_renderer.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

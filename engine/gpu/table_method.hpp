@@ -8,12 +8,12 @@
 #include <memory>
 #include <span>
 
+#include "gemdb/reader.hpp"
+#include "gemdb/view_cache.hpp"
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
-#include "tables/reader.hpp"
-#include "tables/view_cache.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {

@@ -18,7 +18,7 @@
 #include "gpu/render_target.hpp"
 #include "gpu/ring_renderer.hpp"
 #include "gpu/stone_method.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "trace/convex_pieces.hpp"
 #include "trace/folded_exit.hpp"
 #include "util/elapsed.hpp"

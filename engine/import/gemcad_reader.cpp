@@ -14,7 +14,7 @@
 // leave out the "g" and start that line with the teeth.
 // Conventions chosen here for the stone frame (y up through the table):
 // - The Top View is the stone seen from +y with +z at the bottom of the picture (the camera's
-//   face-up view, render/camera.hpp: right +x, up -z). So index i lies at azimuth
+//   face-up view, picture/camera.hpp: right +x, up -z). So index i lies at azimuth
 //   θ = sign(teeth)·2π·(i − offset)/|teeth|, measured from +z toward +x: counter-clockwise
 //   seen from above, as GemCad draws a positive gear.
 // - Angle a: inclination of the facet from the girdle plane; a > 0 crown, a < 0 pavilion,

@@ -11,6 +11,7 @@
 
 #include "geometry/mesh_repair.hpp"
 #include "geometry/polyhedron.hpp"
+#include "geometry/stone.hpp"
 #include "import/gltf_document.hpp"
 #include "import/import_text.hpp"
 #include "piece/gltf_piece_frame.hpp"
@@ -18,7 +19,6 @@
 #include "piece/gltf_stone_evidence.hpp"
 #include "piece/metal_simplify.hpp"
 #include "piece/piece_check.hpp"
-#include "render/camera.hpp"
 
 namespace gem {
 

@@ -4,8 +4,8 @@
 #include <cstdio>
 #include <numbers>
 
+#include "geometry/stone.hpp"
 #include "geometry/triangulate.hpp"
-#include "render/camera.hpp"
 
 namespace gem {
 

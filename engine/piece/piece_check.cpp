@@ -8,9 +8,9 @@
 #include <utility>
 #include <vector>
 
+#include "geometry/stone.hpp"
 #include "piece/seat.hpp"
 #include "piece/stone_shape.hpp"
-#include "render/camera.hpp"
 #include "trace/ray_triangle.hpp"
 
 namespace gem {

@@ -54,7 +54,7 @@ SightMesh sight_mesh(const MetalMesh& metal, const std::vector<PlacedStone>& sto
             t.normals[k] = glm::dvec3(metal.normals[v]);
         }
         if (!placed) continue;
-        // Outward as its vertex normals say (render/piece_tracer.cpp's metal_as_solid).
+        // Outward as its vertex normals say (cpu/piece_tracer.cpp's metal_as_solid).
         if (wound(t, t.normals[0] + t.normals[1] + t.normals[2])) triangles.push_back(t);
     }
     for (const PlacedStone& placed : stones) {

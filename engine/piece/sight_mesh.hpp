@@ -2,7 +2,7 @@
 // What the GPU's metal and stones see of their own piece (gpu/piece_sight.hpp,
 // piece_path.glsl): the metal's triangles and every stone's, where it sits, in one bounding
 // volume hierarchy (trace/bvh_build.hpp), packed as float4 records for the GPU. As in the CPU
-// reference (render/piece_tracer.cpp), a ray that meets the piece sees it and not the
+// reference (cpu/piece_tracer.cpp), a ray that meets the piece sees it and not the
 // environment.
 //
 // Layout, four floats a record (an RGBA32F texel, gpu/texel_array.hpp):

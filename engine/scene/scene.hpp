@@ -12,8 +12,8 @@
 #include <glm/glm.hpp>
 
 #include "geometry/cuts.hpp"
-#include "render/camera.hpp"
-#include "render/lights.hpp"
+#include "picture/camera.hpp"
+#include "scene/lights.hpp"
 #include "util/result.hpp"
 
 namespace gem {

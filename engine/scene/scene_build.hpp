@@ -1,10 +1,9 @@
 #pragma once
-// Turns a scene description into the things a render needs: the stone, the environment and
-// the render settings.
+// Turns a scene description into the things a render needs: the stone and the environment
+// (the CPU reference render's settings: cpu/scene_settings.hpp).
 
 #include "geometry/stone.hpp"
-#include "render/environment.hpp"
-#include "render/reference_render.hpp"
+#include "scene/environment.hpp"
 #include "scene/scene.hpp"
 #include "util/result.hpp"
 
@@ -16,7 +15,5 @@ Result<Stone> build_stone(const Scene& scene);
 
 // Loads the image for an image environment; errors name the file.
 Result<Environment> build_environment(const Scene& scene);
-
-RenderSettings render_settings(const Scene& scene);
 
 }  // namespace gem

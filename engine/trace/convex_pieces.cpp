@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstddef>
 
-#include "render/camera.hpp"
+#include "geometry/stone.hpp"
 
 namespace gem {
 namespace {

@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "render/camera.hpp"
+#include "geometry/stone.hpp"
 #include "trace/convex_pieces.hpp"
 #include "trace/intersector.hpp"
 

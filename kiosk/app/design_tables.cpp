@@ -10,10 +10,10 @@
 #include "app/method_probe.hpp"
 #include "app/process_info.hpp"
 #include "catalogue/payload_checksums.hpp"
+#include "gemdb/bytes.hpp"
+#include "gemdb/format.hpp"
+#include "gemdb/sections.hpp"
 #include "service/log.hpp"
-#include "tables/bytes.hpp"
-#include "tables/format.hpp"
-#include "tables/sections.hpp"
 #include "util/atomic_file.hpp"
 
 namespace gem::kiosk {

@@ -38,8 +38,8 @@
 
 #include "app/child_process.hpp"
 #include "catalogue/catalogue.hpp"
+#include "gemdb/reader.hpp"
 #include "settings/kiosk_config.hpp"
-#include "tables/reader.hpp"
 
 namespace gem::kiosk {
 

@@ -15,7 +15,7 @@
 #include <glm/glm.hpp>
 
 #include "gestures/gesture_output.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 
 namespace gem::kiosk {
 

@@ -20,7 +20,7 @@
 #include "gpu/frame_composer.hpp"
 #include "gpu/visibility_target.hpp"
 #include "input/touch_mapping.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "service/log.hpp"
 
 namespace gem::kiosk {

@@ -7,7 +7,7 @@
 
 #include "app/process_info.hpp"
 #include "gpu/frame_composer.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "util/elapsed.hpp"
 
 namespace gem::kiosk {

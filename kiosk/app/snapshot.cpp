@@ -4,7 +4,7 @@
 
 #include <system_error>
 
-#include "render/image.hpp"
+#include "picture/image.hpp"
 
 namespace gem::kiosk {
 

@@ -3,12 +3,12 @@
 #include <numbers>
 
 #include "app/start_view.hpp"
+#include "gemdb/reader.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu/stone_models.hpp"
+#include "picture/camera.hpp"
 #include "piece/metal_obj.hpp"
-#include "render/camera.hpp"
 #include "scene/scene.hpp"
-#include "tables/reader.hpp"
 
 namespace gem::kiosk {
 
@@ -39,11 +39,11 @@ Result<Environment> make_environment(const LookChoice& look) {
 Result<MetalMesh> make_ring(const CatalogueStone& stone, const Stone& geometry) {
     if (stone.ring == RingKind::obj && stone.ring_mesh) return *stone.ring_mesh;
     if (stone.ring == RingKind::obj) {
-        return load_metal_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+        return load_metal_obj(stone.ring_obj, stone.metal, RingParams{}.roughness);
     }
-    gpu::RingParams params;
+    RingParams params;
     params.metal = stone.metal;
-    return gpu::make_ring(params, geometry);
+    return make_ring(params, geometry);
 }
 
 }  // namespace

@@ -17,9 +17,9 @@
 #include "catalogue/catalogue.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
-#include "gpu/ring_mesh.hpp"
-#include "render/environment.hpp"
-#include "render/lights.hpp"
+#include "piece/ring_mesh.hpp"
+#include "scene/environment.hpp"
+#include "scene/lights.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {

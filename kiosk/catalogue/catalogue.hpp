@@ -15,9 +15,9 @@
 #include <glm/glm.hpp>
 
 #include "catalogue/catalogue_signature.hpp"
-#include "gpu/ring_mesh.hpp"
+#include "gemdb/reader.hpp"
 #include "piece/piece.hpp"
-#include "tables/reader.hpp"
+#include "piece/ring_mesh.hpp"
 
 namespace gem::kiosk {
 
@@ -46,7 +46,7 @@ struct CatalogueOptions {
 };
 
 enum class RingKind {
-    parametric,  // made to fit the stone (gpu::make_ring)
+    parametric,  // made to fit the stone (make_ring)
     none,        // a loose stone
     obj,         // a Wavefront OBJ in the stone frame (piece/metal_obj.hpp)
 };
@@ -66,7 +66,7 @@ struct CatalogueStone {
     RingKind ring = RingKind::parametric;
     std::filesystem::path ring_obj;              // RingKind::obj: absolute path
     std::shared_ptr<const MetalMesh> ring_mesh;  // RingKind::obj: the mesh loaded
-    gpu::RingParams::Metal metal = gpu::RingParams::Metal::yellow_gold;
+    Metal metal = Metal::yellow_gold;
     // Shading-time material overrides (the database records the defaults).
     std::optional<glm::dvec3> colour;
     std::optional<glm::dvec3> absorption_per_mm;

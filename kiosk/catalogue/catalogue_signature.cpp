@@ -3,7 +3,7 @@
 #include <fstream>
 #include <system_error>
 
-#include "catalogue_files.hpp"
+#include "delivery/catalogue_files.hpp"
 
 namespace gem::kiosk {
 

@@ -15,7 +15,7 @@
 
 #include <toml++/toml.h>
 
-#include "catalogue_files.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "piece/metal.hpp"
 
 namespace gem::kiosk {
@@ -156,7 +156,7 @@ Problem read_stone(const toml::table& table, const std::filesystem::path& dir,
     return std::nullopt;
 }
 
-// [blake2b]: "relative/file" = "<128 lowercase hex digits>" (tables/catalogue_files.hpp).
+// [blake2b]: "relative/file" = "<128 lowercase hex digits>" (delivery/catalogue_files.hpp).
 Problem read_digests(const toml::node& node, std::map<std::string, std::string>& out) {
     const toml::table* t = node.as_table();
     if (t == nullptr) return error_at(node, "blake2b", "expected a table [blake2b]");

@@ -23,7 +23,7 @@
 //
 //   [blake2b]                             # optional, required where trusted keys are listed:
 //   "stones/sapphire.gemdb" = "9f86..."  # every other file and its digest, written by gemtables
-//                                        # (tables/catalogue_files.hpp); the last table
+//                                        # (delivery/catalogue_files.hpp); the last table
 //
 // Unknown keys are errors. Every error names the file, the line and the key, as the stone
 // files do (config/stones/README.md): "catalogue.toml:12: stone.metal: unknown metal 'bronze'".
@@ -35,7 +35,7 @@
 #include <string_view>
 
 #include "catalogue/catalogue.hpp"
-#include "catalogue_files.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {

@@ -9,7 +9,7 @@
 #include <optional>
 #include <string>
 
-#include "tables/reader.hpp"
+#include "gemdb/reader.hpp"
 
 namespace gem::kiosk {
 

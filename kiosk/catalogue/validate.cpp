@@ -5,7 +5,7 @@
 #include "catalogue/catalogue_signature.hpp"
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
-#include "catalogue_files.hpp"
+#include "delivery/catalogue_files.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/metal_obj.hpp"
 #include "piece/piece_file.hpp"
@@ -107,7 +107,7 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const Cat
         }
         if (stone.ring == RingKind::obj) {
             Result<MetalMesh> mesh =
-                load_metal_obj(stone.ring_obj, stone.metal, gpu::RingParams{}.roughness);
+                load_metal_obj(stone.ring_obj, stone.metal, RingParams{}.roughness);
             if (!mesh) return reject(relative_message(mesh.error(), stone.ring_obj, real));
             stone.ring_mesh = std::make_shared<const MetalMesh>(std::move(mesh).value());
         }

@@ -7,7 +7,7 @@
 namespace gem::kiosk {
 
 // The same four numbers, with the same meaning, as gem::CameraSettings
-// (engine/render/camera.hpp): azimuth about +y measured from +z toward +x; elevation above the
+// (engine/picture/camera.hpp): azimuth about +y measured from +z toward +x; elevation above the
 // girdle plane; roll turns the camera counter-clockwise about its view axis (so the picture
 // turns clockwise); zoom 1 fits the stone's bounding sphere to the shorter picture side. The
 // gestures keep azimuth and roll in [-180, 180) and elevation inside the stone's database band.

@@ -7,7 +7,7 @@
 // out of it; and an arcball mixes roll into every drag, whereas here roll belongs to the
 // two-finger twist alone, so a shopper can always get back to an upright ring.
 //
-// Directions, so that the finger pushes the surface it touches (engine/render/camera.cpp gives
+// Directions, so that the finger pushes the surface it touches (engine/picture/camera.cpp gives
 // the basis: towards the eye e = (cos el sin az, sin el, cos el cos az), right = (cos az, 0,
 // -sin az), up = right x -e):
 //  - the stone's front point p = r e(az0, el0) sits at screen x = p . right(az) =

@@ -21,7 +21,7 @@ struct BackgroundDraft {
     const Node* file = nullptr;
 };
 
-// The environment loader reads 8-bit PNG and Radiance RGBE (engine/render/environment.hpp).
+// The environment loader reads 8-bit PNG and Radiance RGBE (engine/scene/environment.hpp).
 bool image_file_name(const std::filesystem::path& file) {
     std::string extension = file.extension().string();
     std::transform(extension.begin(), extension.end(), extension.begin(),

@@ -34,7 +34,7 @@ struct PresetLight {
     glm::dvec3 colour{1.0};  // linear RGB intensity
 };
 
-// The shading pass takes at most this many lights (engine/render/lights.hpp, kMaxLights; the
+// The shading pass takes at most this many lights (engine/scene/lights.hpp, kMaxLights; the
 // settings library does not link the engine, so the number is repeated here).
 inline constexpr std::size_t kMaxPresetLights = 4;
 

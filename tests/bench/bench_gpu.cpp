@@ -33,8 +33,8 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "optics/material.hpp"
+#include "piece/ring_mesh.hpp"
 #include "table_build.hpp"
 #include "trace/intersector.hpp"
 #include "trace/parallel.hpp"
@@ -240,7 +240,7 @@ int main(int argc, char** argv) {
     auto stone = gem::make_cut(gem::default_cut_params(gem::CutShape::round_brilliant),
                                *gem::find_material("diamond"));
     const gem::Environment environment = gem::Environment::studio();
-    auto ring = gem::gpu::make_ring({}, stone.value());
+    auto ring = gem::make_ring({}, stone.value());
 
     std::vector<View> views = {{"1024² zoom 1", 1024, 1024, 1.0, 40.0, false},
                                {"1024² zoom 0.62", 1024, 1024, 0.62, 40.0, false},

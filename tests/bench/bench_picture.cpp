@@ -41,16 +41,16 @@
 
 #include "app/framing.hpp"
 #include "app/start_view.hpp"
+#include "cpu/reference_render.hpp"
 #include "display/present_pass.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "optics/colour.hpp"
 #include "optics/material.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
+#include "picture/image_error.hpp"
+#include "piece/ring_mesh.hpp"
 #include "util/elapsed.hpp"
 
 #include "bench_frame.hpp"
@@ -201,7 +201,7 @@ struct Summary {
 
 Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment, int frames) {
     const int w = 1920, h = 1080;
-    const auto ring = must(gem::gpu::make_ring({}, stone));
+    const auto ring = must(gem::make_ring({}, stone));
     std::printf(
         "\n1. passes at %d×%d, the kiosk's start view of the diamond in its ring and the same "
         "at zoom 0.5 (median ms of %d frames; each pass bounded by glFinish; finishing: the "
@@ -455,7 +455,7 @@ void glare_cut(const gem::Stone& stone, const gem::Environment& environment) {
         w, h);
     std::printf("%-22s %10s %10s %12s %14s %14s\n", "frame", "mean ΔE00", "max ΔE00", "most codes",
                 "cut rewrote", "uncut rewrote");
-    const auto ring = must(gem::gpu::make_ring({}, stone));
+    const auto ring = must(gem::make_ring({}, stone));
     auto renderer = make_renderer("trace", stone, environment, &ring);
     std::vector<glm::dvec3> ring_points(ring.positions.begin(), ring.positions.end());
     const gem::kiosk::Framing framing =

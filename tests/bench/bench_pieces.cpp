@@ -41,14 +41,14 @@
 
 #include "app/start_view.hpp"
 #include "app/stone_scene.hpp"
+#include "cpu/piece_tracer.hpp"
+#include "gemdb/reader.hpp"
+#include "gemdb/sections.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "piece/piece_file.hpp"
-#include "render/piece_tracer.hpp"
 #include "scene/scene.hpp"
-#include "tables/reader.hpp"
-#include "tables/sections.hpp"
 #include "trace/intersector.hpp"
 
 #include "bench_frame.hpp"

@@ -13,13 +13,13 @@
 #include <string>
 #include <vector>
 
+#include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
 #include "optics/material.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
+#include "picture/image_error.hpp"
 
 #include "bench_frame.hpp"
 #include "bench_support.hpp"

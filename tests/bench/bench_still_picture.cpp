@@ -5,7 +5,7 @@
 // 55° and the heart ruby at 65° (256²).
 // The reference is the CPU tracer at depth 64, 16 samples a pixel, 12 wavelengths; every
 // picture goes through the same tone curve (no glare) and is compared as 8-bit sRGB, mean and
-// 99th percentile CIEDE2000 over the stone's pixels (render/image_error.hpp).
+// 99th percentile CIEDE2000 over the stone's pixels (picture/image_error.hpp).
 //
 // Per scene: the moving picture (one frame, the trace at depth 8, exact fire, 4× MSAA), and
 // the still picture after the kiosk's 16 still frames with exact fire and with spectral fire
@@ -46,14 +46,15 @@
 #include <string>
 #include <vector>
 
+#include "cpu/reference_render.hpp"
+#include "cpu/scene_settings.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
-#include "render/tone_map.hpp"
+#include "picture/image_error.hpp"
+#include "picture/tone_map.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 

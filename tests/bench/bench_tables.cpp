@@ -18,9 +18,9 @@
 #include <vector>
 
 #include "commands.hpp"
+#include "gemdb/reader.hpp"
+#include "gemdb/view_cache.hpp"
 #include "scene/stone_file.hpp"
-#include "tables/reader.hpp"
-#include "tables/view_cache.hpp"
 #include "trace/parallel.hpp"
 #include "view_trace.hpp"
 

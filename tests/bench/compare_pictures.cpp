@@ -1,7 +1,7 @@
 // How far a picture is from its reference over the piece, as the pieces' and the glTF corpus'
 // figures are given (docs/gltf.md, docs/pieces.md): both averaged over blocks of N × N pixels
 // (linear colour; 4 by default, so that a facet edge a pixel apart is not counted as an error
-// twice), then compared as ΔE00 and PSNR (render/image_error.hpp) over the blocks where the
+// twice), then compared as ΔE00 and PSNR (picture/image_error.hpp) over the blocks where the
 // mask (gemrender --coverage) covers any pixel.
 //
 //   compare_pictures TEST.png REFERENCE.png MASK.png [--block N] [--box X0,Y0,X1,Y1]
@@ -12,8 +12,8 @@
 #include <cstdlib>
 #include <string>
 
-#include "render/image.hpp"
-#include "render/image_error.hpp"
+#include "picture/image.hpp"
+#include "picture/image_error.hpp"
 
 int main(int argc, char** argv) {
     const char* usage =

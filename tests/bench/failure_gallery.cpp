@@ -1,6 +1,6 @@
 // Pictures of where the shading stage fails on views (docs/failure-modes-views.md): for the
 // worst cases the GPU failure tests measure (tests/gpu/failure_*_test.cpp), the render, the
-// exact CPU image and the CIEDE2000 heat map of their difference (render/image_error.hpp),
+// exact CPU image and the CIEDE2000 heat map of their difference (picture/image_error.hpp),
 // side by side. Heat maps run black → red → yellow → white at ΔE00 0 → 20 (red ≈ 7, yellow
 // ≈ 13); a ΔE00 above 2 is visible to a shopper.
 //
@@ -19,7 +19,7 @@
 #include "geometry/cuts.hpp"
 #include "gpu/egl_context.hpp"
 #include "optics/material.hpp"
-#include "render/image_error.hpp"
+#include "picture/image_error.hpp"
 #include "table_build.hpp"
 
 #include "bench_support.hpp"

@@ -10,13 +10,13 @@
 #include <string>
 #include <vector>
 
+#include "gemdb/database_types.hpp"
+#include "gemdb/payload.hpp"
+#include "gemdb/view_grid.hpp"
 #include "geometry/cuts.hpp"
-#include "render/environment.hpp"
-#include "render/image_error.hpp"
-#include "render/shading.hpp"
-#include "tables/database_types.hpp"
-#include "tables/payload.hpp"
-#include "tables/view_grid.hpp"
+#include "picture/image_error.hpp"
+#include "scene/environment.hpp"
+#include "scene/shading.hpp"
 #include "trace/tracer.hpp"
 
 namespace {

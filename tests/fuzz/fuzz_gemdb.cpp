@@ -17,8 +17,8 @@
 #include <string>
 #include <vector>
 
-#include "tables/format.hpp"
-#include "tables/reader.hpp"
+#include "gemdb/format.hpp"
+#include "gemdb/reader.hpp"
 
 namespace {
 

@@ -18,11 +18,11 @@
 #include "../support/cad_corpus.hpp"
 #include "../support/draco_mesh.hpp"
 #include "../support/glb_writer.hpp"
+#include "gemdb/writer.hpp"
 #include "model_seeds.hpp"
 #include "optics/material.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
-#include "tables/writer.hpp"
 #include "trace/tracer.hpp"
 
 namespace {

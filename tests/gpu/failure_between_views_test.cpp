@@ -3,7 +3,7 @@
 // holds one stored image and then jumps to the other where the path crosses the midpoint
 // (popping); the blend fades one into the other, so nothing jumps, but between the views it
 // shows both sparkle patterns at once at reduced contrast (ghosting). Both are measured with
-// render/image_error.hpp against each other frame to frame and against the exact image.
+// picture/image_error.hpp against each other frame to frame and against the exact image.
 #include <algorithm>
 #include <array>
 #include <cmath>
@@ -17,7 +17,7 @@
 #include "failure_render.hpp"
 #include "gpu_table_fixture.hpp"
 #include "gpu_test_support.hpp"
-#include "render/image_error.hpp"
+#include "picture/image_error.hpp"
 
 namespace gem {
 namespace {

@@ -8,7 +8,7 @@
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_handles.hpp"
 #include "gpu/render_target.hpp"
-#include "render/shading.hpp"
+#include "scene/shading.hpp"
 #include "trace/tracer.hpp"
 #include "view_trace.hpp"
 

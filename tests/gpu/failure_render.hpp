@@ -8,15 +8,15 @@
 #include <memory>
 #include <vector>
 
+#include "gemdb/reader.hpp"
 #include "gpu/background_pass.hpp"
 #include "gpu/environment_cube.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/table_method.hpp"
 #include "gpu/trace_method.hpp"
-#include "render/camera.hpp"
-#include "render/environment.hpp"
-#include "render/image.hpp"
-#include "tables/reader.hpp"
+#include "picture/camera.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 #include "util/result.hpp"
 
 namespace gem::failure {

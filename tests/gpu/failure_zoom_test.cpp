@@ -12,7 +12,7 @@
 #include "failure_render.hpp"
 #include "gpu_table_fixture.hpp"
 #include "gpu_test_support.hpp"
-#include "render/image_error.hpp"
+#include "picture/image_error.hpp"
 
 namespace gem {
 namespace {

@@ -13,7 +13,7 @@
 #include "gpu_test_support.hpp"
 #include "optics/colour.hpp"
 #include "optics/material.hpp"
-#include "render/tone_map.hpp"
+#include "picture/tone_map.hpp"
 
 namespace gem {
 namespace {
@@ -63,7 +63,7 @@ TEST(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
     ASSERT_TRUE(picture.ok()) << picture.error();
     auto target = gpu::RenderTarget::make(kSide, kSide);
     ASSERT_TRUE(target.ok()) << target.error();
-    // The surround through the CPU's tone curve (render/tone_map.cpp), the glare of a flat
+    // The surround through the CPU's tone curve (picture/tone_map.cpp), the glare of a flat
     // picture adding its own mean.
     const glm::dvec3 surround = to_display(glm::dvec3(gpu::kSurround), display);
 

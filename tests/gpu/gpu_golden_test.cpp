@@ -15,9 +15,9 @@
 
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "gpu_table_fixture.hpp"
 #include "gpu_test_support.hpp"
+#include "piece/ring_mesh.hpp"
 
 namespace gem {
 namespace {
@@ -58,7 +58,7 @@ Image render_case(const GoldenCase& c) {
     }
     MetalMesh ring;
     if (c.ring) {
-        auto made = gpu::make_ring({}, setup.stone);
+        auto made = make_ring({}, setup.stone);
         EXPECT_TRUE(made.ok()) << made.error();
         ring = std::move(made).value();
         setup.ring = &ring;

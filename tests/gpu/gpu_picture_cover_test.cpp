@@ -15,10 +15,10 @@
 #include "gpu/frame_renderer.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/hdr_picture.hpp"
-#include "gpu/ring_mesh.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/colour.hpp"
 #include "optics/material.hpp"
+#include "piece/ring_mesh.hpp"
 
 namespace gem {
 namespace {
@@ -37,7 +37,7 @@ TEST(GpuPictureCover, AroundThePieceEachFrameIsThePictureDrawnWhole) {
     const Stone stone =
         make_cut(default_cut_params(CutShape::round_brilliant), find_material("diamond").value())
             .value();
-    const MetalMesh ring = gpu::make_ring({}, stone).value();
+    const MetalMesh ring = make_ring({}, stone).value();
     const auto renderer_on = [&](glm::vec3 background) {
         gpu::FrameSetup setup;
         setup.method = "trace";

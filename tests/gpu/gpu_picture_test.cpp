@@ -1,5 +1,5 @@
 // The picture's finishing passes (gpu/hdr_picture.hpp): the GPU tone curve against the CPU's
-// (render/tone_map.cpp), multisampled edges against a 16-sample supersampled render, the glare
+// (picture/tone_map.cpp), multisampled edges against a 16-sample supersampled render, the glare
 // keeping the picture's energy, and the framing shift against a plain translation.
 #include <gtest/gtest.h>
 

@@ -12,12 +12,12 @@
 #include <numbers>
 #include <optional>
 
+#include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu_table_fixture.hpp"
 #include "gpu_test_support.hpp"
-#include "render/reference_render.hpp"
 
 namespace gem {
 namespace {

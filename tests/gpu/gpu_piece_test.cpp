@@ -10,16 +10,16 @@
 #include <filesystem>
 
 #include "../support/cad_corpus.hpp"
+#include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/spectrum.hpp"
+#include "picture/image_error.hpp"
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
 
 namespace gem {
 namespace {

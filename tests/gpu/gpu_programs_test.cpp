@@ -8,7 +8,7 @@
 #include "gpu/program_variants.hpp"
 #include "gpu/stone_geometry.hpp"
 #include "gpu_test_support.hpp"
-#include "render/lights.hpp"
+#include "scene/lights.hpp"
 
 namespace gem {
 namespace {

@@ -147,7 +147,7 @@ glm::dvec3 white_furnace(const glm::dvec3& f0, double roughness, double n_v) {
 
 TEST(MetalMesh, ClosedOutwardAndClearOfTheStone) {
     const Stone stone = round_diamond();
-    auto ring = gpu::make_ring({}, stone);
+    auto ring = make_ring({}, stone);
     ASSERT_TRUE(ring.ok()) << ring.error();
     const MetalMesh& m = ring.value();
     ASSERT_EQ(m.indices.size() % 3, 0u);
@@ -174,7 +174,7 @@ TEST(MetalMesh, ClosedOutwardAndClearOfTheStone) {
     }
     EXPECT_EQ(unmatched, 0);
     // The shank alone: an elliptic torus, 2π R π a b (its 96×16-gon a little less).
-    const gpu::RingParams p;
+    const RingParams p;
     const double shank = 2.0 * kPi * (p.inner_radius_mm + 0.5 * p.band_thickness_mm) * kPi * 0.5 *
                          p.band_thickness_mm * 0.5 * p.band_width_mm;
     EXPECT_GT(volume(m), 0.97 * shank);
@@ -191,14 +191,14 @@ TEST(MetalMesh, ClosedOutwardAndClearOfTheStone) {
         r2 = std::max(r2, double(glm::dot(q, q)));
         ASSERT_LE(std::sqrt(r2), m.radius_mm() + 1e-9);
     }
-    EXPECT_EQ(m.f0, metal_f0(gpu::RingParams::Metal::yellow_gold));
+    EXPECT_EQ(m.f0, metal_f0(Metal::yellow_gold));
 }
 
 TEST(MetalMesh, ProngsTouchTheGirdle) {
     const Stone stone = round_diamond();
-    gpu::RingParams params;
+    RingParams params;
     params.prongs = 6;
-    auto ring = gpu::make_ring(params, stone);
+    auto ring = make_ring(params, stone);
     ASSERT_TRUE(ring.ok()) << ring.error();
     const Tracer tracer(stone);
     RayList list;
@@ -221,23 +221,23 @@ TEST(MetalMesh, ProngsTouchTheGirdle) {
 }
 
 TEST(MetalMesh, BadParametersAreNamed) {
-    gpu::RingParams params;
+    RingParams params;
     params.prong_width_mm = 5.0;
-    auto ring = gpu::make_ring(params, round_diamond());
+    auto ring = make_ring(params, round_diamond());
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("prong_width_mm"), std::string::npos) << ring.error();
 }
 
 TEST(RingObj, SampleLoadsClosedAndOutward) {
     const std::filesystem::path path = GEM_FIXTURES_DIR "/models/ring_band.obj";
-    auto ring = load_metal_obj(path, gpu::RingParams::Metal::platinum, 0.3);
+    auto ring = load_metal_obj(path, Metal::platinum, 0.3);
     ASSERT_TRUE(ring.ok()) << ring.error();
     const MetalMesh& m = ring.value();
     EXPECT_EQ(m.indices.size(), 12u * 4u * 2u * 3u);  // 48 quads, fanned
     EXPECT_EQ(triangles_against_normals(m), 0);
     EXPECT_NEAR(volume(m), 102.0, 1e-3);  // a 12-gon annulus 2 wide: 2 · 3 (9² − 8²)
     EXPECT_NEAR(m.radius_mm(), std::hypot(1.0, 19.0), 1e-4);
-    EXPECT_EQ(m.f0, metal_f0(gpu::RingParams::Metal::platinum));
+    EXPECT_EQ(m.f0, metal_f0(Metal::platinum));
     EXPECT_FLOAT_EQ(m.roughness, 0.3f);
 }
 
@@ -249,7 +249,7 @@ TEST(RingObj, DamagedFileNamesFileAndLine) {
         std::ofstream f(path);
         f << "# a triangle whose last corner is damaged\nv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n";
     }
-    auto ring = load_metal_obj(path, gpu::RingParams::Metal::silver, 0.2);
+    auto ring = load_metal_obj(path, Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("damaged_ring.obj:5:"), std::string::npos) << ring.error();
     EXPECT_NE(ring.error().find("'x'"), std::string::npos) << ring.error();
@@ -258,11 +258,11 @@ TEST(RingObj, DamagedFileNamesFileAndLine) {
         std::ofstream f(path);
         f << "v 0 0 0\nv 1 0 0\nf 1 2 3\n";  // a face before (or without) its vertex
     }
-    ring = load_metal_obj(path, gpu::RingParams::Metal::silver, 0.2);
+    ring = load_metal_obj(path, Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("damaged_ring.obj:3:"), std::string::npos) << ring.error();
 
-    ring = load_metal_obj(dir / "no_such_ring.obj", gpu::RingParams::Metal::silver, 0.2);
+    ring = load_metal_obj(dir / "no_such_ring.obj", Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("no_such_ring.obj"), std::string::npos) << ring.error();
 }
@@ -298,7 +298,7 @@ TEST(GpuRing, CubeFacesShowWhatCubeFaceDirectionSays) {
     const glm::dvec3 markers[6] = {{1.0, 0.3, -0.5},    {-1.0, -0.2, 0.6}, {0.4, 1.0, 0.2},
                                    {-0.3, -1.0, -0.45}, {0.25, -0.5, 1.0}, {-0.6, 0.35, -1.0}};
     MetalMesh mesh;
-    mesh.f0 = metal_f0(gpu::RingParams::Metal::yellow_gold);
+    mesh.f0 = metal_f0(Metal::yellow_gold);
     for (const glm::dvec3& m : markers) {
         const glm::dvec3 c = 6.0 * glm::normalize(m);
         const glm::dvec3 axes[6] = {{1, 0, 0},  {-1, 0, 0}, {0, 1, 0},
@@ -355,7 +355,7 @@ TEST(GpuRing, CubeFacesShowWhatCubeFaceDirectionSays) {
 }
 
 MetalMesh test_ring() {
-    auto ring = gpu::make_ring({}, round_diamond());
+    auto ring = make_ring({}, round_diamond());
     EXPECT_TRUE(ring.ok()) << ring.error();
     return std::move(ring).value();
 }

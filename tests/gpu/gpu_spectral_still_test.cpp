@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <vector>
 
+#include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
@@ -12,9 +13,8 @@
 #include "gpu/hdr_picture.hpp"
 #include "gpu_test_support.hpp"
 #include "optics/material.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
-#include "render/tone_map.hpp"
+#include "picture/image_error.hpp"
+#include "picture/tone_map.hpp"
 #include "scene/scene.hpp"
 
 namespace gem {

@@ -9,12 +9,12 @@
 
 #include <filesystem>
 
+#include "cpu/reference_render.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/stone_models.hpp"
 #include "gpu_test_support.hpp"
+#include "picture/image_error.hpp"
 #include "piece/piece_file.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
 
 namespace gem::gpu {
 namespace {

@@ -6,7 +6,7 @@
 
 #include "geometry/cuts.hpp"
 #include "optics/material.hpp"
-#include "render/shading.hpp"
+#include "scene/shading.hpp"
 #include "table_build.hpp"
 
 namespace gem::gpu_test {

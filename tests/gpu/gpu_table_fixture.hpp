@@ -8,12 +8,12 @@
 #include <memory>
 #include <string>
 
+#include "gemdb/reader.hpp"
 #include "geometry/stone.hpp"
 #include "gpu/environment_cube.hpp"
 #include "gpu/frame_uniforms.hpp"
-#include "render/environment.hpp"
-#include "render/image.hpp"
-#include "tables/reader.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
 

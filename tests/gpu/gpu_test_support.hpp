@@ -9,8 +9,8 @@
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "optics/spectrum.hpp"
-#include "render/camera.hpp"
-#include "render/image.hpp"
+#include "picture/camera.hpp"
+#include "picture/image.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu_test {

@@ -22,7 +22,7 @@
 #include "gpu/render_target.hpp"
 #include "gpu/trace_method.hpp"
 #include "gpu_test_support.hpp"
-#include "render/shading.hpp"
+#include "scene/shading.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem {

@@ -12,8 +12,8 @@
 #include <random>
 #include <set>
 
+#include "cpu/reference_render.hpp"
 #include "failure_optics_ray_checks.hpp"
-#include "render/reference_render.hpp"
 #include "trace_test_stones.hpp"
 
 namespace gem {

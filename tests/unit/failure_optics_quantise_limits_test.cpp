@@ -10,11 +10,11 @@
 #include <cstdio>
 
 #include "failure_optics_support.hpp"
-#include "render/environment.hpp"
-#include "render/image_error.hpp"
-#include "render/shading.hpp"
-#include "tables/payload.hpp"
-#include "tables/quantise.hpp"
+#include "gemdb/payload.hpp"
+#include "gemdb/quantise.hpp"
+#include "picture/image_error.hpp"
+#include "scene/environment.hpp"
+#include "scene/shading.hpp"
 
 namespace gem {
 namespace {

@@ -10,11 +10,11 @@
 #include <string>
 #include <vector>
 
+#include "gemdb/database_types.hpp"
+#include "gemdb/quantise.hpp"
+#include "gemdb/view_grid.hpp"
 #include "geometry/cuts.hpp"
 #include "optics/material.hpp"
-#include "tables/database_types.hpp"
-#include "tables/quantise.hpp"
-#include "tables/view_grid.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem::failure_test {

@@ -15,8 +15,8 @@
 #include <cstdio>
 
 #include "failure_optics_support.hpp"
-#include "tables/reader.hpp"
-#include "tables/writer.hpp"
+#include "gemdb/reader.hpp"
+#include "gemdb/writer.hpp"
 
 namespace gem {
 namespace {

@@ -13,11 +13,11 @@
 #include <string>
 #include <thread>
 
+#include "gemdb/reader.hpp"
+#include "gemdb/sections.hpp"
+#include "picture/image.hpp"
 #include "piece/piece_file.hpp"
 #include "piece/stone_shape.hpp"
-#include "render/image.hpp"
-#include "tables/reader.hpp"
-#include "tables/sections.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {

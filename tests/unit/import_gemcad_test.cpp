@@ -14,7 +14,7 @@
 #include "geometry/validate.hpp"
 #include "import/load_model.hpp"
 #include "import_test_files.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 
 namespace gem {
 namespace {
@@ -114,7 +114,7 @@ glm::dvec3 one_crown_facet(const std::string& gear, const std::string& index) {
 }
 
 // Where a crown facet's normal points in GemCad's Top View: the stone seen from above, as the
-// face-up camera (render/camera.hpp) draws it. Degrees counter-clockwise from the bottom of
+// face-up camera (picture/camera.hpp) draws it. Degrees counter-clockwise from the bottom of
 // the picture.
 double top_view_degrees(const glm::dvec3& n) {
     const Camera top = Camera::make(CameraSettings{}, 1.0, 64, 64).value();

@@ -8,11 +8,11 @@
 #include <fstream>
 #include <string>
 
+#include "gemdb/sections.hpp"
 #include "piece/piece_check.hpp"
 #include "piece/piece_file.hpp"
 #include "piece/stone_shape.hpp"
 #include "scene/stone_file.hpp"
-#include "tables/sections.hpp"
 
 namespace gem {
 namespace {

@@ -9,8 +9,8 @@
 #include <cmath>
 
 #include "geometry/cuts.hpp"
+#include "picture/camera.hpp"
 #include "piece/sight_mesh.hpp"
-#include "render/camera.hpp"
 
 namespace gem {
 namespace {

@@ -5,7 +5,7 @@
 #include <gtest/gtest.h>
 #include <glm/gtx/rotate_vector.hpp>
 
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 
 namespace gem {
 namespace {

@@ -4,7 +4,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/reference_render.hpp"
+#include "cpu/reference_render.hpp"
 #include "render_test_stones.hpp"
 
 namespace gem {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "render/environment.hpp"
-#include "render/image.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 
 namespace gem {
 namespace {

@@ -10,8 +10,9 @@
 
 #include <gtest/gtest.h>
 
-#include "render/image.hpp"
-#include "render/reference_render.hpp"
+#include "cpu/reference_render.hpp"
+#include "cpu/scene_settings.hpp"
+#include "picture/image.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "render/image_error.hpp"
+#include "picture/image_error.hpp"
 
 namespace gem {
 namespace {

@@ -9,7 +9,7 @@
 #include <gtest/gtest.h>
 #include <stb/stb_image.h>
 
-#include "render/image.hpp"
+#include "picture/image.hpp"
 
 namespace gem {
 namespace {

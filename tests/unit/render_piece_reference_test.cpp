@@ -12,10 +12,10 @@
 #include <cmath>
 #include <cstdio>
 
+#include "cpu/reference_render.hpp"
 #include "optics/material.hpp"
 #include "optics/microfacet.hpp"
 #include "piece/metal.hpp"
-#include "render/reference_render.hpp"
 #include "trace_cut_stones.hpp"
 
 namespace gem {

@@ -6,6 +6,7 @@
 
 #include <gtest/gtest.h>
 
+#include "cpu/scene_settings.hpp"
 #include "scene/scene.hpp"
 #include "scene/scene_build.hpp"
 

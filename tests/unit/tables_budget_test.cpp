@@ -8,10 +8,10 @@
 #include <numbers>
 
 #include "budget.hpp"
+#include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "optics/material.hpp"
-#include "render/image_error.hpp"
-#include "render/reference_render.hpp"
+#include "picture/image_error.hpp"
 #include "scene/scene.hpp"
 
 namespace gem::tables {

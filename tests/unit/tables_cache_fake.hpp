@@ -14,7 +14,7 @@
 #include <utility>
 #include <vector>
 
-#include "tables/view_cache.hpp"
+#include "gemdb/view_cache.hpp"
 
 namespace gem::cache_test {
 

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "tables/view_cache.hpp"
+#include "gemdb/view_cache.hpp"
 #include "tables_cache_fake.hpp"
 
 namespace gem {

@@ -10,9 +10,9 @@
 #include <optional>
 #include <set>
 
-#include "tables/reader.hpp"
-#include "tables/view_cache.hpp"
-#include "tables/view_cache_motion.hpp"
+#include "gemdb/reader.hpp"
+#include "gemdb/view_cache.hpp"
+#include "gemdb/view_cache_motion.hpp"
 #include "tables_cache_fake.hpp"
 #include "tables_test_support.hpp"
 

@@ -9,7 +9,7 @@
 #include <cstring>
 #include <string>
 
-#include "tables/reader.hpp"
+#include "gemdb/reader.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {

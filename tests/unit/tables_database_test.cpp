@@ -8,9 +8,9 @@
 
 #include <cmath>
 
-#include "tables/quantise.hpp"
-#include "tables/reader.hpp"
-#include "tables/writer.hpp"
+#include "gemdb/quantise.hpp"
+#include "gemdb/reader.hpp"
+#include "gemdb/writer.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {

@@ -9,8 +9,8 @@
 
 #include <glm/glm.hpp>
 
+#include "gemdb/facet_symmetry.hpp"
 #include "geometry/cuts.hpp"
-#include "tables/facet_symmetry.hpp"
 
 namespace gem {
 namespace {

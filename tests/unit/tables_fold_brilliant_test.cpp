@@ -6,9 +6,9 @@
 
 #include <random>
 
+#include "gemdb/database_types.hpp"
+#include "gemdb/view_grid.hpp"
 #include "geometry/cuts.hpp"
-#include "tables/database_types.hpp"
-#include "tables/view_grid.hpp"
 #include "trace/tracer.hpp"
 
 namespace gem {

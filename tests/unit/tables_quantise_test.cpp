@@ -1,5 +1,5 @@
 // Quantisation error bounds: measured worst cases against the bounds derived in
-// tables/quantise.hpp, and exact half-float codes worked out by hand from IEEE 754.
+// gemdb/quantise.hpp, and exact half-float codes worked out by hand from IEEE 754.
 
 #include <gtest/gtest.h>
 
@@ -7,7 +7,7 @@
 #include <limits>
 #include <random>
 
-#include "tables/quantise.hpp"
+#include "gemdb/quantise.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {

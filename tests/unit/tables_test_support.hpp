@@ -16,10 +16,10 @@
 
 #include <glm/glm.hpp>
 
+#include "gemdb/database_types.hpp"
+#include "gemdb/view_grid.hpp"
+#include "gemdb/writer.hpp"
 #include "geometry/stone.hpp"
-#include "tables/database_types.hpp"
-#include "tables/view_grid.hpp"
-#include "tables/writer.hpp"
 #include "trace/ray_list.hpp"
 
 namespace gem::tables_test {

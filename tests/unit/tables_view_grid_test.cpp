@@ -10,7 +10,7 @@
 #include <optional>
 #include <random>
 
-#include "tables/view_grid.hpp"
+#include "gemdb/view_grid.hpp"
 #include "tables_test_support.hpp"
 
 namespace gem {

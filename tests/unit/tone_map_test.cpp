@@ -1,4 +1,4 @@
-// The display transform (render/tone_map.hpp): values worked by hand from the PBR Neutral
+// The display transform (picture/tone_map.hpp): values worked by hand from the PBR Neutral
 // specification's formulas, the properties the curve is chosen for (hue kept, nothing above 1,
 // order kept), and the exposure.
 #include <algorithm>
@@ -7,7 +7,7 @@
 
 #include <gtest/gtest.h>
 
-#include "render/tone_map.hpp"
+#include "picture/tone_map.hpp"
 
 namespace gem {
 namespace {

@@ -12,7 +12,7 @@
 #include <set>
 
 #include "optics/fresnel.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "trace/convex_pieces.hpp"
 #include "trace/intersector.hpp"
 #include "trace/ray_triangle.hpp"

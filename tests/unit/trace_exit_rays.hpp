@@ -9,7 +9,7 @@
 #include <random>
 
 #include "optics/fresnel.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"
 

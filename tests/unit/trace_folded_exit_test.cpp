@@ -12,7 +12,7 @@
 #include <numbers>
 
 #include "import/load_model.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "trace/folded_exit.hpp"
 #include "trace/intersector.hpp"
 #include "trace_cut_stones.hpp"

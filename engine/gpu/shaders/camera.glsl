@@ -1,4 +1,4 @@
-// The pixel ray of engine/render/camera.cpp's Camera::ray, per fragment, in the stone frame.
+// The pixel ray of engine/picture/camera.cpp's Camera::ray, per fragment, in the stone frame.
 uniform vec3 u_cam_forward;
 uniform vec3 u_cam_right;
 uniform vec3 u_cam_up;

@@ -4,7 +4,7 @@
 // (metal_environment.hpp): the environment filtered by the lobe, read along the reflected
 // direction, times the environment BRDF looked up by n·v and roughness.
 // A light is what the CPU reference makes of it: a lobe of radiance colour·(ω·l)^h about its
-// direction (render/lights.hpp). Its reflection is the BRDF integrated over that lobe,
+// direction (scene/lights.hpp). Its reflection is the BRDF integrated over that lobe,
 // approximated as the lobe's solid angle 2π/(h+1) times a GGX widened by it: near their peaks
 // both are Gaussians in the half-vector's angle, of variances alpha²/4 and 1/(4h), so the
 // widened alpha² is alpha² + 1/h. Follows specular.glsl (the lights).

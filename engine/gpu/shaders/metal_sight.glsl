@@ -4,7 +4,7 @@
 // through the piece's triangles (piece_path.glsl), corrects it by what it meets less what the
 // environment would have shown there: a control variate, so a ray that escapes adds nothing
 // and no noise, and the mean over the still frames is the metal seeing its piece as the
-// reference's does (render/piece_tracer.cpp). Compiled in with SEES_PIECE. The lights' lobes
+// reference's does (cpu/piece_tracer.cpp). Compiled in with SEES_PIECE. The lights' lobes
 // the split sum reflects are left as they are where the first ray meets the piece (the
 // reference's would be blocked there): taking them off too made single frames dark where a
 // lobe is narrow and bright, specks on a white look's metal after 20 frames, for 0.04 ΔE00 or

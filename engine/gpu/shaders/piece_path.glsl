@@ -1,7 +1,7 @@
 // Rays followed through a whole piece in a still view's frames: its metal's and stones'
 // triangles in one bounding volume hierarchy (piece/sight_mesh.hpp, piece_sight.hpp), walked
 // from the metal's reflections (metal_sight.glsl) and from the stones' exits (stone_sight.glsl)
-// as the exact reference follows them (render/piece_tracer.cpp). Compiled in with SEES_PIECE;
+// as the exact reference follows them (cpu/piece_tracer.cpp). Compiled in with SEES_PIECE;
 // follows texel.glsl, specular.glsl (the lights' lobes) and metal.glsl (the metal's shading).
 // Everything here is in the piece's frame.
 

@@ -1,5 +1,5 @@
 // Shading shared by the table and trace methods (docs/design.md, "Stage 2: shading": thesis
-// eq. 6.2-6.5), the GPU twin of engine/render/shading.cpp: everything here works in the stone
+// eq. 6.2-6.5), the GPU twin of engine/scene/shading.cpp: everything here works in the stone
 // frame (mm). Follows stone.glsl (the facet planes) and specular.glsl.
 //  physical: w_r (E(r) + k_s L(r)) + sum_n w_n exp(-sigma path_n) (E(t_n) + k_st L(t_n))
 //  thesis:   w_r k_s L(r) + sum_n w_n I_o k_st L(t_n) + sum_k w_k (E(k) alpha + I_o (1 - alpha))

@@ -5,7 +5,7 @@
 // 2 log2(h) multiplications where pow costs a log2 and an exp2 polynomial: on llvmpipe,
 // trace's stone pass took 0.94 times and phong's 0.97 times as long at h = 60 (bench_gpu,
 // zoom 0.5, medians of ten alternated runs).
-#define MAX_LIGHTS 4  // render/lights.hpp: kMaxLights
+#define MAX_LIGHTS 4  // scene/lights.hpp: kMaxLights
 #ifndef LIGHT_COUNT
 #define LIGHT_COUNT 0
 #endif

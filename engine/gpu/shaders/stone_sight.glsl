@@ -1,7 +1,7 @@
 // What a stone in a piece sees of its setting, in a still view's frames (trace_method.hpp):
 // the stone's exits read a virtual cube of its group (piece/sight_groups.hpp), which holds the
 // environment and the metal as the split sum shades it, seen by direction from one point, and
-// no stones. The exact reference follows each exit into the piece (render/piece_tracer.cpp):
+// no stones. The exact reference follows each exit into the piece (cpu/piece_tracer.cpp):
 // the claw beside the exit point, the neighbouring stones, the metal's own reflections. So one
 // of the pixel's exits (its first reflection among them) is chosen, each with a chance in
 // proportion to its weight times what the cube and the lights showed it plus the environment's

@@ -1,4 +1,4 @@
-// Scene-linear to display-linear: the GPU twin of engine/render/tone_map.cpp (the Khronos PBR
+// Scene-linear to display-linear: the GPU twin of engine/picture/tone_map.cpp (the Khronos PBR
 // Neutral tone mapper; see there for the reasons and the source of the constants).
 uniform float u_exposure;  // 2^exposure_ev
 uniform int u_tone_curve;  // 0: clip; 1: neutral

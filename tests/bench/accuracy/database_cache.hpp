@@ -8,8 +8,8 @@
 #include <memory>
 #include <string>
 
+#include "gemdb/reader.hpp"
 #include "geometry/stone.hpp"
-#include "tables/reader.hpp"
 #include "util/result.hpp"
 
 namespace gem::accuracy {

@@ -1,6 +1,6 @@
 #include "example_images.hpp"
 
-#include "render/image_error.hpp"
+#include "picture/image_error.hpp"
 
 namespace gem::accuracy {
 

@@ -5,7 +5,7 @@
 #include <filesystem>
 #include <vector>
 
-#include "render/image.hpp"
+#include "picture/image.hpp"
 #include "util/result.hpp"
 
 namespace gem::accuracy {

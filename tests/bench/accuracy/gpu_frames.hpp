@@ -7,13 +7,13 @@
 #include <memory>
 #include <vector>
 
+#include "gemdb/reader.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/table_method.hpp"
-#include "render/camera.hpp"
-#include "render/environment.hpp"
-#include "render/image.hpp"
+#include "picture/camera.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 #include "scenes.hpp"
-#include "tables/reader.hpp"
 #include "trace/tracer.hpp"
 #include "util/result.hpp"
 

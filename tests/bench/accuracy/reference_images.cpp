@@ -1,7 +1,7 @@
 #include "reference_images.hpp"
 
+#include "cpu/reference_render.hpp"
 #include "gpu_frames.hpp"
-#include "render/reference_render.hpp"
 
 namespace gem::accuracy {
 

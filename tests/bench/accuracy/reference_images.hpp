@@ -1,10 +1,10 @@
 #pragma once
-// The CPU side of the comparison: reference renders (render/reference_render.hpp) of a scene
+// The CPU side of the comparison: reference renders (cpu/reference_render.hpp) of a scene
 // with the GPU frame's exact camera, at the full reference settings or cheaper ones; a ring
 // scene is traced as a piece (the stone in its metal, render_piece_reference).
 
-#include "render/environment.hpp"
-#include "render/image.hpp"
+#include "picture/image.hpp"
+#include "scene/environment.hpp"
 #include "scenes.hpp"
 #include "util/result.hpp"
 

@@ -7,8 +7,8 @@
 #include <string>
 #include <vector>
 
-#include "render/image.hpp"
-#include "render/image_error.hpp"
+#include "picture/image.hpp"
+#include "picture/image_error.hpp"
 #include "util/result.hpp"
 
 namespace gem::accuracy {

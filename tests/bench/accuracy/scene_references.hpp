@@ -8,7 +8,7 @@
 #include <vector>
 
 #include "reference_images.hpp"
-#include "render/environment.hpp"
+#include "scene/environment.hpp"
 #include "scenes.hpp"
 #include "util/result.hpp"
 

@@ -43,9 +43,9 @@ Result<std::vector<Scene>> make_scenes(bool quick) {
                       20.0, std::nullopt, true});
     // Polished, so one sample at a pixel's centre is exact in the reference as on the GPU (a
     // rough ring's reflection is sampled in the reference, filtered on the GPU).
-    gpu::RingParams polished;
+    RingParams polished;
     polished.roughness = 0.0;
-    auto ring = gpu::make_ring(polished, diamond.value());
+    auto ring = make_ring(polished, diamond.value());
     if (!ring) return Error{ring.error()};
     scenes.push_back({"diamond-ring", "diamond", diamond.value(), direction_from(-30.0, 40.0), 20.0,
                       std::move(ring).value(), true});

@@ -10,8 +10,8 @@
 #include <glm/glm.hpp>
 
 #include "geometry/stone.hpp"
-#include "gpu/ring_mesh.hpp"
-#include "render/shading.hpp"
+#include "piece/ring_mesh.hpp"
+#include "scene/shading.hpp"
 #include "util/result.hpp"
 
 namespace gem::accuracy {

@@ -7,8 +7,8 @@
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu_frames.hpp"
+#include "picture/tone_map.hpp"
 #include "reference_images.hpp"
-#include "render/tone_map.hpp"
 
 namespace gem::accuracy {
 namespace {

@@ -15,8 +15,8 @@
 
 #include <vector>
 
-#include "render/environment.hpp"
 #include "results.hpp"
+#include "scene/environment.hpp"
 #include "scenes.hpp"
 #include "util/result.hpp"
 

@@ -8,7 +8,7 @@
 
 #include <glm/glm.hpp>
 
-#include "tables/view_grid.hpp"
+#include "gemdb/view_grid.hpp"
 
 namespace gem::accuracy {
 

@@ -16,9 +16,9 @@
 #include <thread>
 
 #include "app/design_tables.hpp"
+#include "gemdb/sections.hpp"
 #include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"
-#include "tables/sections.hpp"
 
 namespace gem::kiosk {
 namespace {

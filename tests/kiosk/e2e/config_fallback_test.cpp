@@ -9,7 +9,7 @@
 
 #include "e2e_fixture.hpp"
 #include "kiosk_process.hpp"
-#include "render/image.hpp"
+#include "picture/image.hpp"
 
 namespace gem::kiosk_e2e {
 namespace {

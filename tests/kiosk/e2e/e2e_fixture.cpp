@@ -24,7 +24,7 @@
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
 #include "kiosk_process.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 #include "settings/kiosk_config.hpp"
 
 namespace gem::kiosk_e2e {

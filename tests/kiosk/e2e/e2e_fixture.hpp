@@ -12,9 +12,9 @@
 
 #include <glm/glm.hpp>
 
+#include "gemdb/reader.hpp"
 #include "gestures/gesture_output.hpp"
-#include "render/image.hpp"
-#include "tables/reader.hpp"
+#include "picture/image.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk_e2e {

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "render/image.hpp"
+#include "picture/image.hpp"
 
 namespace gem::kiosk_e2e {
 

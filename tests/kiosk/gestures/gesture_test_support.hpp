@@ -11,7 +11,7 @@
 #include <glm/vec3.hpp>
 
 #include "gestures/gesture_controller.hpp"
-#include "render/camera.hpp"
+#include "picture/camera.hpp"
 
 namespace gem::kiosk::test {
 

@@ -58,7 +58,7 @@ piece = "pieces/halo.toml"
     EXPECT_EQ(a.database, dir / "stones" / "oval.gemdb");
     EXPECT_EQ(a.ring, RingKind::obj);
     EXPECT_EQ(a.ring_obj, dir / "rings" / "solitaire.obj");
-    EXPECT_EQ(a.metal, gpu::RingParams::Metal::white_gold);
+    EXPECT_EQ(a.metal, Metal::white_gold);
     ASSERT_TRUE(a.colour.has_value());
     EXPECT_EQ(*a.colour, glm::dvec3(0.1, 0.2, 0.7));
     ASSERT_TRUE(a.absorption_per_mm.has_value());
@@ -69,7 +69,7 @@ piece = "pieces/halo.toml"
     EXPECT_EQ(b.database, dir / "diamond.gemdb");
     EXPECT_EQ(b.ring, RingKind::none);
     // Defaults: yellow gold, no overrides, the kiosk's own presets.
-    EXPECT_EQ(b.metal, gpu::RingParams::Metal::yellow_gold);
+    EXPECT_EQ(b.metal, Metal::yellow_gold);
     EXPECT_FALSE(b.colour.has_value());
     EXPECT_FALSE(b.absorption_per_mm.has_value());
     EXPECT_TRUE(b.background.empty());

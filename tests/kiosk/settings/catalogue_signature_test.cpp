@@ -14,9 +14,9 @@
 #include "catalogue/catalogue_signature.hpp"
 #include "catalogue/minisign.hpp"
 #include "catalogue/validate.hpp"
-#include "catalogue_files.hpp"
 #include "catalogue_test_support.hpp"
 #include "commands.hpp"
+#include "delivery/catalogue_files.hpp"
 
 namespace gem::kiosk {
 namespace {

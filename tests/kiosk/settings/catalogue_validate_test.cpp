@@ -12,7 +12,7 @@
 
 #include "catalogue/validate.hpp"
 #include "catalogue_test_support.hpp"
-#include "tables/reader.hpp"
+#include "gemdb/reader.hpp"
 
 namespace gem::kiosk {
 namespace {
