@@ -1,7 +1,7 @@
 #pragma once
 // What a build running beside a live display asks of the system: the CPU only when nothing
 // else wants it, and a bound on its memory. The kiosk builds a design's tables with
-// `gemtables build --idle --memory-mb N` (kiosk/app/design_tables.hpp) while it draws frames.
+// `gemtables build --idle --memory-mb N` (kiosk/builds/design_tables.hpp) while it draws frames.
 
 #include <cstdint>
 #include <string>

@@ -39,7 +39,7 @@ Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
                        "precision highp usamplerCube;\n";
     for (const std::string& d : spec.defines) text += "#define " + d + "\n";
     for (std::size_t i = 0; i < names.size(); ++i) {
-        auto chunk = shader_text(names[i]);
+        auto chunk = shader_text(names[i], spec.sources);
         if (!chunk) return Error{where + ": " + chunk.error()};
         text += "#line 1 " + std::to_string(i) + "\n";
         text += chunk.value();
@@ -61,7 +61,12 @@ Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
 
 }  // namespace
 
-Result<std::string_view> shader_text(std::string_view name) {
+Result<std::string_view> shader_text(std::string_view name, const std::vector<ShaderSource>* own) {
+    if (own != nullptr) {
+        for (const ShaderSource& s : *own) {
+            if (s.name == name) return s.text;
+        }
+    }
     for (const ShaderSource& s : shader_sources()) {
         if (s.name == name) return s.text;
     }

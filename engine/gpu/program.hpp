@@ -16,6 +16,7 @@
 #include <glm/glm.hpp>
 
 #include "gpu/gl_handles.hpp"
+#include "gpu/shader_sources.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
@@ -31,6 +32,9 @@ struct ProgramSpec {
     // "300 es"; "310 es" where the sources need OpenGL ES 3.1 (glsl_version() in
     // program_variants.hpp), built only on a context that has it.
     std::string glsl_version = "300 es";
+    // A program's own sources (a kiosk pass's, kiosk/passes/shaders), looked up before the
+    // engine's; null: the engine's alone.
+    const std::vector<ShaderSource>* sources = nullptr;
 };
 
 class Program {
@@ -76,7 +80,9 @@ class Program {
     mutable std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
 };
 
-// The text of one embedded source; an error names a missing one.
-Result<std::string_view> shader_text(std::string_view name);
+// The text of one embedded source, `own` (ProgramSpec::sources) searched before the engine's;
+// an error names a missing one.
+Result<std::string_view> shader_text(std::string_view name,
+                                     const std::vector<ShaderSource>* own = nullptr);
 
 }  // namespace gem::gpu

@@ -65,9 +65,6 @@ std::vector<ProgramSpec> all_program_specs() {
         {"bloom_up", {"fullscreen.vert"}, {"bloom_up.frag"}, {}},
         {"accumulate", {"fullscreen.vert"}, {"accumulate.frag"}, {}},
         {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
-        // The kiosk's turned copy to the window surface (kiosk/display/present_pass).
-        {"present", {"fullscreen.vert"}, {"present.frag"}, {}},
-        {"present_bytes", {"fullscreen.vert"}, {"present.frag"}, {"PICTURE_BYTES"}},
     };
 }
 

@@ -1,6 +1,7 @@
 #pragma once
-// The GLSL ES 3.00 sources of engine/gpu/shaders, built into the library (the kiosk reads no
-// shader files at run time). A program is linked from a list of these names: shared chunks
+// The GLSL ES sources of engine/gpu/shaders, built into the library (the kiosk reads no
+// shader files at run time; its own passes' sources are built into kiosk/passes the same way). A
+// program is linked from a list of these names: shared chunks
 // (*.glsl) first, the stage's main file (*.vert, *.frag) last.
 
 #include <string_view>

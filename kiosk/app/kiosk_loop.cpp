@@ -16,13 +16,13 @@
 #include <optional>
 #include <vector>
 
-#include "app/crossfade.hpp"
-#include "app/frame_stats.hpp"
 #include "app/kiosk_run.hpp"
 #include "app/kiosk_session.hpp"
-#include "app/process_info.hpp"
 #include "app/signals.hpp"
+#include "passes/crossfade.hpp"
+#include "service/frame_stats.hpp"
 #include "service/log.hpp"
+#include "service/process_info.hpp"
 
 namespace gem::kiosk {
 

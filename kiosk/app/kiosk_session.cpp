@@ -11,10 +11,7 @@
 #include <numbers>
 
 #include "app/catalogue_setup.hpp"
-#include "app/method_probe_run.hpp"
-#include "app/process_info.hpp"
 #include "app/snapshot.hpp"
-#include "app/start_view.hpp"
 #include "catalogue/catalogue_store.hpp"
 #include "display/open_display.hpp"
 #include "gpu/frame_composer.hpp"
@@ -22,6 +19,8 @@
 #include "input/touch_mapping.hpp"
 #include "picture/camera.hpp"
 #include "service/log.hpp"
+#include "service/process_info.hpp"
+#include "stage/start_view.hpp"
 
 namespace gem::kiosk {
 
@@ -384,120 +383,35 @@ void KioskSession::rebuild_scene(double now_s) {
 }
 
 void KioskSession::choose_render_method() {
-    // Once per session, as the first stone is shown: a catalogue switch or a new stone keeps
-    // the choice, since the cost is set by the picture's pixels and the stone's share of them
-    // (the start view frames every ring the same way), and a probe halves the frame rate for a
-    // few seconds. A display reopened at another size keeps it too.
-    const glm::ivec2 size = display_->picture_size();
-    if (probed_size_ == size) return;
-    if (probed_size_ && first_frame_shown_) {
-        log_info("render.method auto: keeping the choice measured at " +
-                 std::to_string(probed_size_->x) + "x" + std::to_string(probed_size_->y));
-        probed_size_ = size;
-        return;
-    }
-    const double budget_ms = frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
-                                             config_.render.auto_headroom);
-    if (!std::isfinite(budget_ms)) {
-        // No target rate (a headless display drawing as fast as it can): nothing to hold, so
-        // the most accurate candidate without spending seconds measuring it (exact fire
-        // draws as plain trace where a database stores no dispersion).
-        probed_size_ = size;
-        const MethodCandidate best = method_ladder(0, true).front();
-        render_ = apply_candidate(render_, best);
-        log_info("render.method auto: no frame rate to hold; using " + best.name);
-        return;
-    }
-    // The probe builds its own picture and scenes (a second of llvmpipe's time at 1080p): the
-    // first frame is shown with the table before it starts.
-    if (!first_frame_shown_) {
-        probe_after_first_frame_ = true;
-        return;
-    }
-    // Marked before probing: a probe that fails is not tried again once frames are on screen.
-    probed_size_ = size;
-    probe_with_extras_.reset();
-    auto probe = MethodProbe::start(selection_->stone(), selection_->look(), render_,
-                                    scene_picture_->options(), size, kStartView, budget_ms);
-    if (!probe) {
-        log_error("render.method auto: no probe (" + probe.error() + "); using table");
-        return;
-    }
-    probe_ = std::move(probe).value();
-    log_info("render.method auto: measuring the methods while the stone is shown with the table");
+    auto_method_.choose(
+        {.stone = selection_->stone(),
+         .look = selection_->look(),
+         .render = render_,
+         .picture = scene_picture_->options(),
+         .size = display_->picture_size(),
+         .budget_ms = frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
+                                      config_.render.auto_headroom)},
+        first_frame_shown_, render_);
 }
 
 void KioskSession::advance_probe(double now_s) {
-    if (!probe_ || !probe_->step()) return;
-    apply_probe(now_s);
-}
-
-void KioskSession::apply_probe(double now_s) {
-    ProbeResult r = probe_->result();
-    probe_.reset();
-    const auto chosen_ms = [](const ProbeResult& p) {
-        const auto& statistic = p.choice.statistic_ms[p.choice.index];
-        return statistic ? *statistic : std::nan("");
-    };
-    // The extras the picture on screen has (a GPU may offer fewer samples than asked, or no
-    // float target for the glare).
-    const bool extras = scene_picture_->samples() > 1 ||
-                        (scene_picture_->options().glare > 0.0 && scene_picture_->high_range());
-    if (r.choice.valid && !r.choice.fits && extras && !probe_with_extras_) {
-        // Probed again without MSAA and glare, still between frames shown.
-        gpu::PictureOptions without = r.picture;
-        without.samples = 1;
-        without.glare = 0.0;
-        auto again = MethodProbe::start(selection_->stone(), selection_->look(), render_, without,
-                                        display_->picture_size(), kStartView, r.choice.budget_ms);
-        if (again) {
-            probe_with_extras_ = std::move(r);
-            probe_ = std::move(again).value();
-            return;
-        }
-        log_error("render.method auto: no probe without MSAA and glare (" + again.error() + ")");
-    }
-    if (probe_with_extras_ && r.choice.valid) {
-        char line[240];
-        std::snprintf(line, sizeof line,
-                      "picture: MSAA and glare off: no method held the %.1f ms budget with them "
-                      "(%s p90 %.1f ms); without them %s p90 %.1f ms; still views are still "
-                      "averaged, over up to %d frames",
-                      r.choice.budget_ms, chosen_name(*probe_with_extras_).c_str(),
-                      chosen_ms(*probe_with_extras_), chosen_name(r).c_str(), chosen_ms(r),
-                      r.picture.still_frames);
-        log_warning(line);
-        r.seconds += probe_with_extras_->seconds;  // both probes: the choice's whole cost
-        auto remade = gpu::HdrPicture::make(picture_->width(), picture_->height(), r.picture);
+    const PictureExtras extras{
+        .samples = scene_picture_->samples(),
+        .glare = scene_picture_->options().glare > 0.0 && scene_picture_->high_range()};
+    const std::optional<AutoMethod::Choice> choice = auto_method_.step(extras);
+    if (!choice) return;
+    if (choice->picture) {
+        auto remade =
+            gpu::HdrPicture::make(picture_->width(), picture_->height(), *choice->picture);
         if (remade) {
             scene_picture_.emplace(std::move(remade).value());
             scene_picture_->set_display(display_transform(config_.picture, selection_->look()));
         } else {
             log_error("picture: " + remade.error());
         }
-    } else if (probe_with_extras_) {
-        r = std::move(*probe_with_extras_);  // without the extras nothing drew: keep them
     }
-    probe_with_extras_.reset();
-    if (!r.choice.valid) {
-        log_error("render.method auto: no candidate drew a frame; using table");
-        return;
-    }
-    render_ = apply_candidate(render_, r.candidates[r.choice.index]);
-    const glm::ivec2 size = display_->picture_size();
-    char cost[96];
-    std::snprintf(cost, sizeof cost, " (%dx%d, probe took %.2f s)", size.x, size.y, r.seconds);
-    const std::string line = describe_choice(r.candidates, r.choice) + cost;
-    if (r.choice.fits) {
-        log_info(line);
-    } else {
-        char why[112];
-        std::snprintf(why, sizeof why,
-                      "; no method holds the frame rate, using the first refracting one within "
-                      "%.2fx of the fastest",
-                      kNearFastest);
-        log_warning(line + why);
-    }
+    if (!choice->render) return;
+    render_ = *choice->render;
     // The stone drawn again with the choice, faded in over the table's picture.
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
@@ -508,10 +422,6 @@ void KioskSession::apply_probe(double now_s) {
 bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
     return a.azimuth_deg == b.azimuth_deg && a.elevation_deg == b.elevation_deg &&
            a.roll_deg == b.roll_deg && a.zoom == b.zoom;
-}
-
-std::string KioskSession::chosen_name(const ProbeResult& probe) {
-    return probe.candidates[probe.choice.index].name;
 }
 
 gpu::FrameView KioskSession::frame_view(double now_s) {
@@ -551,7 +461,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
 
     FrameRecord record;
     record.start_s = monotonic_now_s();
-    record.probing = probe_ != nullptr;
+    record.probing = auto_method_.probing();
     record.still = scene_picture_->still_frame().index;
     last_frame_start_s_ = record.start_s;
     bool stand_in = false;  // a view not yet resident was stood in for (FrameStats::stand_in)
@@ -628,10 +538,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
                       seconds_since_process_start());
         log_info(line);
         notifier_.ready("showing " + selection_->describe());
-        if (probe_after_first_frame_) {
-            probe_after_first_frame_ = false;
-            choose_render_method();
-        }
+        if (auto_method_.waiting_for_first_frame()) choose_render_method();
     }
     start_replay(done_s);
     const int every = config_.snapshot.every_n_frames;
@@ -663,7 +570,10 @@ void KioskSession::log_still_view_settled() {
 void KioskSession::start_replay(double now_s) {
     // A replay starts once the kiosk is on screen with its chosen method, so neither start-up
     // nor the method probe eats its first gestures, and its frames are the chosen method's.
-    if (!replay_ || replay_->started() || !first_frame_shown_ || probe_ || scene_stale_) return;
+    if (!replay_ || replay_->started() || !first_frame_shown_ || auto_method_.probing() ||
+        scene_stale_) {
+        return;
+    }
     replay_->start(now_s);
 }
 
@@ -695,7 +605,7 @@ bool KioskSession::replay_settled(double now_s) const {
     // one whatever the machine's speed.
     // ... and render.method auto has made its choice and shows it.
     return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s &&
-           scene_picture_ && scene_picture_->refined() && !probe_ && !scene_stale_;
+           scene_picture_ && scene_picture_->refined() && !auto_method_.probing() && !scene_stale_;
 }
 
 void KioskSession::finish() {
@@ -709,7 +619,7 @@ void KioskSession::finish() {
     if (run_.snapshot_last && picture_) write_snapshot_file("last.png");
     // GL objects go while their context is current, then the display (which restores the mode
     // the screen had before the kiosk).
-    probe_.reset();
+    auto_method_.stop();
     scene_.reset();
     crossfade_.reset();
     picture_.reset();

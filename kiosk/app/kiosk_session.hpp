@@ -9,14 +9,8 @@
 #include <string>
 #include <vector>
 
-#include "app/crossfade.hpp"
-#include "app/design_tables.hpp"
-#include "app/frame_stats.hpp"
 #include "app/kiosk_run.hpp"
-#include "app/method_probe_run.hpp"
-#include "app/picture_choice.hpp"
-#include "app/scene_selection.hpp"
-#include "app/stone_scene.hpp"
+#include "builds/design_tables.hpp"
 #include "catalogue/catalogue_completion.hpp"
 #include "catalogue/catalogue_watcher.hpp"
 #include "display/display.hpp"
@@ -25,8 +19,14 @@
 #include "gpu/hdr_picture.hpp"
 #include "input/evemu_replay.hpp"
 #include "input/input_manager.hpp"
+#include "passes/crossfade.hpp"
+#include "probe/auto_method.hpp"
+#include "service/frame_stats.hpp"
 #include "service/service_notifier.hpp"
 #include "settings/kiosk_config.hpp"
+#include "stage/picture_choice.hpp"
+#include "stage/scene_selection.hpp"
+#include "stage/stone_scene.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -67,17 +67,10 @@ class KioskSession {
     // one on screen, or another catalogue is switched to where its later entries failed.
     void complete_catalogue(Result<Catalogue> whole, double now_s);
     void rebuild_scene(double now_s);
-    // render.method = auto: starts measuring the candidates (method_probe_run.hpp) while the
-    // stone is shown with the safe choice (the table).
+    // render.method = auto (probe/auto_method.hpp): asked as a scene is made and after the
+    // first frame; a probe frame after each frame shown, its choice applied once made.
     void choose_render_method();
-    // One more probe frame, after a frame shown; once the choice is made, it is applied.
     void advance_probe(double now_s);
-    // When no method holds the frame rate with the picture's extras (MSAA, glare), the methods
-    // are probed again without them, and the picture is made without them if that holds it;
-    // the journal says what each measured. Still views keep their averaged frames (they cost
-    // nothing while turning).
-    void apply_probe(double now_s);
-    static std::string chosen_name(const ProbeResult& probe);  // the chosen candidate's name
     void apply_actions(double now_s);
     void write_snapshot_file(const std::string& name);
     void write_requested_snapshot();  // SIGUSR1's, after a frame is on screen
@@ -117,10 +110,7 @@ class KioskSession {
     std::unique_ptr<DesignTables> design_tables_;  // designs' tables, built in the background
     DesignTables::KindTables scene_tables_;        // the tables the scene was made with
     RenderChoice render_;
-    std::optional<glm::ivec2> probed_size_;  // auto: the picture size the choice was made for
-    bool probe_after_first_frame_ = false;   // auto: the probe waits for the first frame
-    std::unique_ptr<MethodProbe> probe_;     // auto: measuring while the stone is shown
-    std::optional<ProbeResult> probe_with_extras_;  // the first probe's, when extras are shed
+    AutoMethod auto_method_;
 
     ServiceNotifier notifier_;
     bool first_frame_shown_ = false;

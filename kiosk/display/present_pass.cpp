@@ -9,7 +9,7 @@
 #include "display/rotation.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_extensions.hpp"
-#include "gpu/program_catalog.hpp"
+#include "passes/pass_programs.hpp"
 
 namespace gem::kiosk {
 
@@ -28,7 +28,9 @@ PresentPass::Copy PresentPass::supported_copy() {
 }
 
 Result<PresentPass> PresentPass::make(Copy copy) {
-    auto program = gpu::build_program(copy == Copy::bytes ? "present_bytes" : "present");
+    auto program = copy == Copy::bytes
+                       ? build_pass_program("present_bytes", "present.frag", {"PICTURE_BYTES"})
+                       : build_pass_program("present", "present.frag");
     if (!program) return Error{program.error()};
     return PresentPass(std::move(program).value(), copy);
 }

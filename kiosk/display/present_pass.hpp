@@ -1,7 +1,7 @@
 #pragma once
 // Draws the picture into the bound framebuffer (the window surface), turned clockwise by the
 // display's rotation, its sRGB bytes unchanged although the window surface is not an sRGB
-// framebuffer (engine/gpu/shaders/present.frag): copied as they are where the GL can skip
+// framebuffer (kiosk/passes/shaders/present.frag): copied as they are where the GL can skip
 // the sampler's sRGB decode (EXT_texture_sRGB_decode), else decoded and encoded again.
 
 #include <optional>

@@ -25,7 +25,7 @@ inline constexpr const char* kDefaultConfigFile = "/etc/gemkiosk/gemkiosk.toml";
 // [render]: how the stone is shaded (docs/design.md, "Methods side by side").
 // method: a stone method by its name in the registry (gpu/stone_method.hpp), or "auto": the
 // most accurate of trace, table blend, table nearest, table one level lower and phong that
-// holds the frame rate, measured at start (app/method_probe.hpp).
+// holds the frame rate, measured at start (probe/method_probe.hpp).
 inline constexpr const char* kAutoMethod = "auto";
 
 struct RenderConfig {
@@ -65,7 +65,7 @@ struct PictureConfig {
     // frame: what a touch waits for (0: whole, whatever it costs).
     double still_frame_ms = 100.0;
     // Start view: the girdle's width as a share of the picture's height, as far as the whole
-    // ring still fits (app/framing.hpp).
+    // ring still fits (stage/framing.hpp).
     double stone_share = 0.25;
 };
 
@@ -89,7 +89,7 @@ struct CatalogueConfig {
 };
 
 // [designs]: tables for catalogue stones that name a design instead of a database
-// (app/design_tables.hpp). A design is shown at once by the trace; its tables are built by
+// (builds/design_tables.hpp). A design is shown at once by the trace; its tables are built by
 // `builder` in the background, at idle CPU priority and with bounded memory, into
 // state_dir/tables, and reused after a restart.
 enum class DesignTablesMode { automatic, always, never };

@@ -1,7 +1,7 @@
 // Figures of the GPU shading stage, printed (not asserted): does a frame's cost follow the
 // stone's pixels? Every method draws the round diamond at 1024×1024 with its bounding sphere
 // at zoom 1, 0.62 (about a fifth of the picture), 0.5 and 0.25, and in its ring at the kiosk's
-// start view (1920×1080, framed as the kiosk frames it: kiosk/app/framing.hpp, the shipped
+// start view (1920×1080, framed as the kiosk frames it: kiosk/stage/framing.hpp, the shipped
 // stone_share 0.25); per view and method: the median
 // ms per frame (each bounded by glFinish) over a turn of 1° a frame at 40° elevation and of
 // its stone pass alone (between glFinish calls), the stone's pixels (counted on the CPU by the
@@ -27,14 +27,14 @@
 #include <string>
 #include <vector>
 
-#include "app/framing.hpp"
-#include "app/start_view.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "gpu/render_target.hpp"
 #include "optics/material.hpp"
 #include "piece/ring_mesh.hpp"
+#include "stage/framing.hpp"
+#include "stage/start_view.hpp"
 #include "table_build.hpp"
 #include "trace/intersector.hpp"
 #include "trace/parallel.hpp"

@@ -39,8 +39,6 @@
 #include <optional>
 #include <vector>
 
-#include "app/framing.hpp"
-#include "app/start_view.hpp"
 #include "cpu/reference_render.hpp"
 #include "display/present_pass.hpp"
 #include "geometry/cuts.hpp"
@@ -51,6 +49,8 @@
 #include "optics/material.hpp"
 #include "picture/image_error.hpp"
 #include "piece/ring_mesh.hpp"
+#include "stage/framing.hpp"
+#include "stage/start_view.hpp"
 #include "util/elapsed.hpp"
 
 #include "bench_frame.hpp"

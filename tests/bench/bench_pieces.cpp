@@ -1,5 +1,5 @@
 // What a piece's frame costs against the solitaire's, printed, not asserted: each piece as the
-// kiosk draws it (kiosk/app/stone_scene.hpp: the shipped config's first look, the trace, the
+// kiosk draws it (kiosk/stage/stone_scene.hpp: the shipped config's first look, the trace, the
 // start view framed as the kiosk frames it), the pieces drawn in turn frame by frame so that
 // the machine's load falls on all of them alike. Per piece: the median whole frame, its stone
 // passes alone (FrameWait::passes: its depth pass and its shading) and the CPU's time issuing that
@@ -39,8 +39,6 @@
 #include <string>
 #include <vector>
 
-#include "app/start_view.hpp"
-#include "app/stone_scene.hpp"
 #include "cpu/piece_tracer.hpp"
 #include "gemdb/reader.hpp"
 #include "gemdb/sections.hpp"
@@ -49,6 +47,8 @@
 #include "gpu/render_target.hpp"
 #include "piece/piece_file.hpp"
 #include "scene/scene.hpp"
+#include "stage/start_view.hpp"
+#include "stage/stone_scene.hpp"
 #include "trace/intersector.hpp"
 
 #include "bench_frame.hpp"

@@ -15,7 +15,7 @@
 #include <numbers>
 #include <thread>
 
-#include "app/design_tables.hpp"
+#include "builds/design_tables.hpp"
 #include "gemdb/sections.hpp"
 #include "piece/piece_file.hpp"
 #include "scene/stone_file.hpp"

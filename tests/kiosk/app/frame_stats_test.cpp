@@ -2,7 +2,7 @@
 // calculations.
 #include <gtest/gtest.h>
 
-#include "app/frame_stats.hpp"
+#include "service/frame_stats.hpp"
 
 namespace gem::kiosk {
 namespace {

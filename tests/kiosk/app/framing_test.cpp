@@ -1,8 +1,8 @@
-// The start view's framing (app/framing.hpp), against outlines whose projections are worked
+// The start view's framing (stage/framing.hpp), against outlines whose projections are worked
 // out by hand: a camera looking straight down the y axis at zoom 1 sees x to the right.
 #include <gtest/gtest.h>
 
-#include "app/framing.hpp"
+#include "stage/framing.hpp"
 
 namespace gem::kiosk {
 namespace {

@@ -7,8 +7,8 @@
 
 #include <gtest/gtest.h>
 
-#include "app/method_probe.hpp"
 #include "gpu/stone_method.hpp"
+#include "probe/method_probe.hpp"
 
 namespace gem::kiosk {
 namespace {

@@ -2,7 +2,7 @@
 // the look handed to the renderer combines the two presets as documented.
 #include <gtest/gtest.h>
 
-#include "app/scene_selection.hpp"
+#include "stage/scene_selection.hpp"
 
 namespace gem::kiosk {
 namespace {

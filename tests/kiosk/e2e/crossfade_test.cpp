@@ -6,8 +6,8 @@
 
 #include <memory>
 
-#include "app/crossfade.hpp"
 #include "e2e_fixture.hpp"
+#include "passes/crossfade.hpp"
 
 namespace gem::kiosk {
 namespace {

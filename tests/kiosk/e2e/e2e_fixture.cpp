@@ -14,10 +14,6 @@
 #include <memory>
 #include <sstream>
 
-#include "app/picture_choice.hpp"
-#include "app/scene_selection.hpp"
-#include "app/start_view.hpp"
-#include "app/stone_scene.hpp"
 #include "catalogue/validate.hpp"
 #include "gpu/egl_context.hpp"
 #include "gpu/frame_composer.hpp"
@@ -26,6 +22,10 @@
 #include "kiosk_process.hpp"
 #include "picture/camera.hpp"
 #include "settings/kiosk_config.hpp"
+#include "stage/picture_choice.hpp"
+#include "stage/scene_selection.hpp"
+#include "stage/start_view.hpp"
+#include "stage/stone_scene.hpp"
 
 namespace gem::kiosk_e2e {
 

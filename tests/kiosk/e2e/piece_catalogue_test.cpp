@@ -12,9 +12,9 @@
 #include <memory>
 #include <numbers>
 
-#include "app/start_view.hpp"
 #include "e2e_fixture.hpp"
 #include "kiosk_process.hpp"
+#include "stage/start_view.hpp"
 
 namespace gem::kiosk_e2e {
 namespace {

@@ -1,4 +1,4 @@
-#include "app/design_tables.hpp"
+#include "builds/design_tables.hpp"
 
 #include <xxhash.h>
 
@@ -7,13 +7,13 @@
 #include <cstdio>
 #include <system_error>
 
-#include "app/method_probe.hpp"
-#include "app/process_info.hpp"
 #include "catalogue/payload_checksums.hpp"
 #include "gemdb/bytes.hpp"
 #include "gemdb/format.hpp"
 #include "gemdb/sections.hpp"
+#include "probe/method_probe.hpp"
 #include "service/log.hpp"
+#include "service/process_info.hpp"
 #include "util/atomic_file.hpp"
 
 namespace gem::kiosk {

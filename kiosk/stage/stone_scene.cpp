@@ -1,14 +1,14 @@
-#include "app/stone_scene.hpp"
+#include "stage/stone_scene.hpp"
 
 #include <numbers>
 
-#include "app/start_view.hpp"
 #include "gemdb/reader.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu/stone_models.hpp"
 #include "picture/camera.hpp"
 #include "piece/metal_obj.hpp"
 #include "scene/scene.hpp"
+#include "stage/start_view.hpp"
 
 namespace gem::kiosk {
 

@@ -1,9 +1,9 @@
 #pragma once
 // The [picture] config and a look's exposure, as the GPU's picture takes them.
 
-#include "app/stone_scene.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "settings/kiosk_config.hpp"
+#include "stage/stone_scene.hpp"
 
 namespace gem::kiosk {
 

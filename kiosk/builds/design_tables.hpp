@@ -36,7 +36,7 @@
 #include <string>
 #include <vector>
 
-#include "app/child_process.hpp"
+#include "builds/child_process.hpp"
 #include "catalogue/catalogue.hpp"
 #include "gemdb/reader.hpp"
 #include "settings/kiosk_config.hpp"

@@ -1,4 +1,4 @@
-#include "app/framing.hpp"
+#include "stage/framing.hpp"
 
 #include <algorithm>
 #include <limits>

@@ -1,4 +1,4 @@
-#include "app/child_process.hpp"
+#include "builds/child_process.hpp"
 
 #include <fcntl.h>
 #include <signal.h>

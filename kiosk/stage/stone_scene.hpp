@@ -13,13 +13,13 @@
 
 #include <glm/glm.hpp>
 
-#include "app/framing.hpp"
 #include "catalogue/catalogue.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/frame_renderer.hpp"
 #include "piece/ring_mesh.hpp"
 #include "scene/environment.hpp"
 #include "scene/lights.hpp"
+#include "stage/framing.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {

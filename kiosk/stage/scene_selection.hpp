@@ -7,9 +7,9 @@
 #include <string>
 #include <vector>
 
-#include "app/stone_scene.hpp"
 #include "catalogue/catalogue.hpp"
 #include "settings/presets.hpp"
+#include "stage/stone_scene.hpp"
 
 namespace gem::kiosk {
 

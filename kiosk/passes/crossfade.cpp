@@ -1,13 +1,14 @@
-#include "app/crossfade.hpp"
+#include "passes/crossfade.hpp"
 
 #include <algorithm>
 
 #include "gpu/gl_check.hpp"
+#include "passes/pass_programs.hpp"
 
 namespace gem::kiosk {
 
 Result<CrossFade> CrossFade::make(int width, int height) {
-    auto program = gpu::Program::build({"fade", {"fullscreen.vert"}, {"fade.frag"}, {}});
+    auto program = build_pass_program("fade", "fade.frag");
     if (!program) return Error{program.error()};
     auto held = gpu::RenderTarget::make(width, height);
     if (!held) return Error{held.error()};

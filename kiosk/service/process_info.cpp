@@ -1,4 +1,4 @@
-#include "app/process_info.hpp"
+#include "service/process_info.hpp"
 
 #include <time.h>
 #include <unistd.h>

@@ -1,13 +1,13 @@
-#include "app/method_probe_run.hpp"
+#include "probe/method_probe_run.hpp"
 
 #include <GLES3/gl3.h>
 
 #include <chrono>
 #include <cmath>
 
-#include "app/process_info.hpp"
 #include "gpu/frame_composer.hpp"
 #include "picture/camera.hpp"
+#include "service/process_info.hpp"
 #include "util/elapsed.hpp"
 
 namespace gem::kiosk {

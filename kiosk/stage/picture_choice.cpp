@@ -1,4 +1,4 @@
-#include "app/picture_choice.hpp"
+#include "stage/picture_choice.hpp"
 
 namespace gem::kiosk {
 

@@ -1,4 +1,4 @@
-#include "app/scene_selection.hpp"
+#include "stage/scene_selection.hpp"
 
 #include <cassert>
 

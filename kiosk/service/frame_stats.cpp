@@ -1,4 +1,4 @@
-#include "app/frame_stats.hpp"
+#include "service/frame_stats.hpp"
 
 #include <algorithm>
 #include <cmath>

@@ -15,11 +15,11 @@
 #include <glm/vec2.hpp>
 #include <glm/vec3.hpp>
 
-#include "app/method_probe.hpp"
-#include "app/stone_scene.hpp"
 #include "gestures/gesture_output.hpp"
 #include "gpu/hdr_picture.hpp"
 #include "gpu/render_target.hpp"
+#include "probe/method_probe.hpp"
+#include "stage/stone_scene.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {

@@ -1,6 +1,6 @@
-#include "app/method_probe.hpp"
+#include "probe/method_probe.hpp"
 
-#include "app/frame_stats.hpp"
+#include "service/frame_stats.hpp"
 
 #include <algorithm>
 #include <cmath>
