@@ -29,19 +29,6 @@ namespace {
 // How long a missing display waits before the kiosk tries to open it again.
 constexpr double kDisplayRetryS = 5.0;
 
-// What validation said of a catalogue about to be shown: stones left out, notes, warnings;
-// past what it said of `said` (the same catalogue opened for its first stone), which were
-// logged then.
-void log_catalogue_lines(const Catalogue& catalogue, const Catalogue* said = nullptr) {
-    const auto past = [](const std::vector<std::string>& lines, std::size_t logged,
-                         void (*log)(std::string_view)) {
-        for (std::size_t i = logged; i < lines.size(); ++i) log(lines[i]);
-    };
-    past(catalogue.left_out, said ? said->left_out.size() : 0, log_error);
-    past(catalogue.notes, said ? said->notes.size() : 0, log_info);
-    past(catalogue.warnings, said ? said->warnings.size() : 0, log_warning);
-}
-
 }  // namespace
 
 Result<std::unique_ptr<KioskSession>> KioskSession::make(const KioskRun& run) {
@@ -84,39 +71,10 @@ Result<bool> KioskSession::configure() {
     render_.stone_share = config_.picture.stone_share;
 
     selection_ = std::make_unique<SceneSelection>(config_.backgrounds, config_.lightings);
-    const CatalogueOptions catalogue = catalogue_setup(config_, resolved, kept_in);
-    // Its first stone only: the rest is validated while that one is shown.
-    auto startup = load_startup_catalogue(catalogue, Entries::first);
-    if (startup) {
-        const Catalogue& c = startup.value();
-        log_info("catalogue '" + c.name + "' with " +
-                 std::to_string(c.stones.size() + c.unchecked) + " stones from " +
-                 c.directory.string() +
-                 (c.unchecked > 0 ? "; the first shown, the rest checked while it is" : ""));
-        log_catalogue_lines(c);
-        selection_->set_catalogue(c);
-        if (c.unchecked > 0) {
-            auto completion = CatalogueCompletion::start(catalogue);
-            if (completion) {
-                completion_ = std::move(completion).value();
-            } else {
-                log_error("catalogue: only its first stone is shown (" + completion.error() + ")");
-            }
-        }
-        catalogue_ = std::move(startup).value();
-    } else {
-        // The kiosk still runs: it shows its background and takes the first valid catalogue
-        // staff deliver.
-        log_error("no catalogue to show: " + startup.error());
-    }
+    catalogues_ = std::make_unique<CatalogueFeed>(catalogue_setup(config_, resolved, kept_in));
+    if (const Catalogue* shown = catalogues_->shown()) selection_->set_catalogue(*shown);
     design_tables_ =
         std::make_unique<DesignTables>(config_.designs, config_.catalogue.state_dir / "tables");
-    auto watcher = CatalogueWatcher::start(catalogue);
-    if (watcher) {
-        watcher_ = std::move(watcher).value();
-    } else {
-        log_error("new catalogues will not be picked up: " + watcher.error());
-    }
 
     if (config_.display.backend == "drm") {
         seat_ = Seat::open();
@@ -214,8 +172,7 @@ std::vector<int> KioskSession::poll_fds() const {
     // VT switch is acknowledged even while the kiosk waits for a screen.
     if (!display_ && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
     if (input_) fds.push_back(input_->fd());
-    if (watcher_) fds.push_back(watcher_->event_fd());
-    if (completion_) fds.push_back(completion_->event_fd());
+    catalogues_->add_poll_fds(fds);
     if (design_tables_ && design_tables_->fd() >= 0) fds.push_back(design_tables_->fd());
     return fds;
 }
@@ -259,14 +216,18 @@ void KioskSession::dispatch(double now_s) {
         last_input_s_ = t;
         gestures_->on_event(event);
     }
-    if (completion_) {
-        if (auto whole = completion_->take()) {
-            completion_.reset();
-            complete_catalogue(std::move(*whole), now_s);
-        }
-    }
-    if (watcher_) {
-        if (auto incoming = watcher_->take_switch()) switch_catalogue(std::move(*incoming), now_s);
+    switch (catalogues_->dispatch()) {
+        case CatalogueFeed::Arrival::none:
+            break;
+        case CatalogueFeed::Arrival::completed:
+            // The same catalogue's other entries join the one on screen, whose scene stays.
+            if (!selection_->complete_catalogue(*catalogues_->shown())) scene_stale_ = true;
+            break;
+        case CatalogueFeed::Arrival::switched:
+            hold_picture(now_s);
+            selection_->set_catalogue(*catalogues_->shown());
+            scene_stale_ = true;
+            break;
     }
     // A design's tables came into or went out of use: its scene is made again between frames.
     if (design_tables_ &&
@@ -275,54 +236,20 @@ void KioskSession::dispatch(double now_s) {
     }
 }
 
-void KioskSession::complete_catalogue(Result<Catalogue> whole, double now_s) {
-    if (!whole) {
-        // Neither the installed copy nor the shipped catalogue validates whole: what is on
-        // screen was checked, and nothing more is taken from them.
-        log_error(whole.error() + "; only the stone on screen, checked, is shown");
-        return;
-    }
-    if (!catalogue_ || whole.value().directory != catalogue_->directory) {
-        switch_catalogue(std::move(whole).value(), now_s);  // the copy failed: the default
-        return;
-    }
-    // The same catalogue: what validation said beyond the first stone, and the other stones
-    // join the one on screen, whose scene stays.
-    const Catalogue& c = whole.value();
-    log_catalogue_lines(c, &*catalogue_);
-    log_info("catalogue '" + c.name + "': every entry checked, " + std::to_string(c.stones.size()) +
-             " to show" +
-             (c.left_out.empty() ? "" : ", " + std::to_string(c.left_out.size()) + " left out"));
-    if (!selection_->complete_catalogue(c)) scene_stale_ = true;
-    catalogue_ = std::move(whole).value();
+void KioskSession::rescan_catalogues() {
+    catalogues_->rescan();
 }
 
-void KioskSession::switch_catalogue(Catalogue catalogue, double now_s) {
-    completion_.reset();  // a delivery outranks what the startup catalogue would have become
-    log_notice("showing catalogue '" + catalogue.name + "' (" +
-               std::to_string(catalogue.stones.size()) + " stones" +
-               (catalogue.signed_by.empty() ? "" : ", signed by key " + catalogue.signed_by) +
-               ") from " + catalogue.directory.string());
-    log_catalogue_lines(catalogue);
+void KioskSession::hold_picture(double now_s) {
     if (picture_ && crossfade_ && first_frame_shown_) {
         crossfade_->hold(*picture_, now_s, config_.crossfade_s);
     }
-    selection_->set_catalogue(catalogue);
-    catalogue_ = std::move(catalogue);
-    scene_stale_ = true;
-}
-
-void KioskSession::rescan_catalogues() {
-    log_info("rescanning the catalogue inbox (SIGHUP)");
-    if (watcher_) watcher_->rescan();
 }
 
 void KioskSession::apply_actions(double now_s) {
     for (GestureAction action : gestures_->take_actions()) {
         if (!selection_->has_stone() && action == GestureAction::next_stone) continue;
-        if (picture_ && crossfade_ && first_frame_shown_) {
-            crossfade_->hold(*picture_, now_s, config_.crossfade_s);
-        }
+        hold_picture(now_s);
         if (action == GestureAction::next_stone) selection_->next_stone();
         if (action == GestureAction::next_preset) selection_->next_preset();
         scene_stale_ = true;
@@ -413,9 +340,7 @@ void KioskSession::advance_probe(double now_s) {
     if (!choice->render) return;
     render_ = *choice->render;
     // The stone drawn again with the choice, faded in over the table's picture.
-    if (picture_ && crossfade_ && first_frame_shown_) {
-        crossfade_->hold(*picture_, now_s, config_.crossfade_s);
-    }
+    hold_picture(now_s);
     scene_stale_ = true;
 }
 
@@ -425,18 +350,11 @@ bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
 }
 
 gpu::FrameView KioskSession::frame_view(double now_s) {
-    gpu::FrameView view = scene_->frame_view(gestures_->view(), display_->picture_size());
-    // The view direction's rotation since the last frame, as an angular velocity, lets the
-    // stone method prepare for the views the turn will reach before it reaches them.
     const glm::ivec2 size = display_->picture_size();
+    gpu::FrameView view = scene_->frame_view(gestures_->view(), size);
     auto camera = Camera::make(view.camera, view.framing_mm, size.x, size.y);
-    if (!camera) return view;  // the composer says why
-    const glm::dvec3 forward = camera.value().forward();
-    if (last_forward_s_ >= 0.0 && now_s > last_forward_s_) {
-        view.omega = glm::cross(last_forward_, forward) / (now_s - last_forward_s_);
-    }
-    last_forward_ = forward;
-    last_forward_s_ = now_s;
+    if (camera)
+        view.omega = turn_.next(camera.value().forward(), now_s);  // else the composer says why
     return view;
 }
 

@@ -11,8 +11,7 @@
 
 #include "app/kiosk_run.hpp"
 #include "builds/design_tables.hpp"
-#include "catalogue/catalogue_completion.hpp"
-#include "catalogue/catalogue_watcher.hpp"
+#include "catalogue/catalogue_feed.hpp"
 #include "display/display.hpp"
 #include "display/seat.hpp"
 #include "gestures/gesture_controller.hpp"
@@ -27,6 +26,7 @@
 #include "stage/picture_choice.hpp"
 #include "stage/scene_selection.hpp"
 #include "stage/stone_scene.hpp"
+#include "stage/turn_rate.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -62,10 +62,8 @@ class KioskSession {
     void try_open_display(double now_s);
     double next_frame_allowed_s() const;
     Result<bool> make_gpu_objects();
-    void switch_catalogue(Catalogue catalogue, double now_s);
-    // The startup catalogue validated whole (CatalogueCompletion): its other entries join the
-    // one on screen, or another catalogue is switched to where its later entries failed.
-    void complete_catalogue(Result<Catalogue> whole, double now_s);
+    // The picture on screen held, to fade from it into what changed (none before the first).
+    void hold_picture(double now_s);
     void rebuild_scene(double now_s);
     // render.method = auto (probe/auto_method.hpp): asked as a scene is made and after the
     // first frame; a probe frame after each frame shown, its choice applied once made.
@@ -99,10 +97,7 @@ class KioskSession {
     double oldest_unshown_input_s_ = -1.0;
     double last_input_s_ = -1.0;
 
-    std::unique_ptr<CatalogueWatcher> watcher_;
-    std::optional<Catalogue> catalogue_;
-    // The startup catalogue's entries after its first, validated while it is shown.
-    std::unique_ptr<CatalogueCompletion> completion_;
+    std::unique_ptr<CatalogueFeed> catalogues_;
     std::unique_ptr<SceneSelection> selection_;
     std::unique_ptr<StoneScene> scene_;
     bool scene_stale_ = true;
@@ -121,8 +116,7 @@ class KioskSession {
     std::optional<ViewState> last_view_;  // the last frame's, to tell a still view
     bool faded_last_frame_ = false;
     bool still_view_logged_ = false;  // this still view's "refined" line is in the log
-    glm::dvec3 last_forward_{0.0};
-    double last_forward_s_ = -1.0;
+    TurnRate turn_;                   // the view's, frame by frame
 };
 
 }  // namespace gem::kiosk

@@ -94,7 +94,7 @@ bool MethodProbe::step() {
         scene_ = std::move(made).value();
         frame_ = 0;
         misses_ = 0;
-        last_forward_ = glm::dvec3(0.0);
+        turn_.restart();
     }
     const glm::ivec2 size(target_->width(), target_->height());
     const ViewState view = turned(start_view_, options_.turn_deg_per_frame * frame_);
@@ -106,10 +106,7 @@ bool MethodProbe::step() {
     // As the kiosk's draw does: the turn's angular velocity lets the stone method prepare
     // ahead (the table streams the way a drag does).
     const double frame_s = std::isfinite(budget_ms_) ? budget_ms_ / 1000.0 : 1.0 / 60.0;
-    const glm::dvec3 forward = camera.value().forward();
-    const glm::dvec3 omega =
-        frame_ > 0 ? glm::cross(last_forward_, forward) / frame_s : glm::dvec3(0.0);
-    last_forward_ = forward;
+    const glm::dvec3 omega = turn_.next(camera.value().forward(), frame_ * frame_s);
     // The frame shown before this one is not this one's cost.
     glFinish();
     const auto begin = std::chrono::steady_clock::now();

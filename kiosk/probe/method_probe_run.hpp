@@ -20,6 +20,7 @@
 #include "gpu/render_target.hpp"
 #include "probe/method_probe.hpp"
 #include "stage/stone_scene.hpp"
+#include "stage/turn_rate.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -78,7 +79,7 @@ class MethodProbe {
     std::unique_ptr<StoneScene> scene_;
     int frame_ = 0;
     int misses_ = 0;
-    glm::dvec3 last_forward_{0.0};
+    TurnRate turn_;
 };
 
 // The render choice for a candidate, the rest taken from `base`.
