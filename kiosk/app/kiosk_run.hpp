@@ -7,6 +7,8 @@
 #include <optional>
 #include <string>
 
+#include "settings/kiosk_config.hpp"
+
 namespace gem::kiosk {
 
 struct KioskRun {
@@ -30,6 +32,10 @@ struct KioskRun {
     double max_seconds = 0.0;        // stop after this long (0: no limit)
     std::string stats_csv;           // every frame's times, written at exit
 };
+
+// `config` as `run` overrides it: the command line outranks the file (CI and support runs say
+// exactly what they need).
+void apply_run_overrides(const KioskRun& run, KioskConfig& config);
 
 // Runs until SIGTERM/SIGINT or a bound in `run`; returns the process exit status.
 int run_kiosk(const KioskRun& run);

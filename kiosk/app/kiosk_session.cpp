@@ -49,26 +49,8 @@ Result<bool> KioskSession::configure() {
     for (const std::string& error : resolved.errors) log_error(error);
     config_ = resolved.config;
     set_log_threshold(config_.log_level);
-    // The command line outranks the file: CI and support runs say exactly what they need.
-    if (run_.backend) config_.display.backend = *run_.backend;
-    if (run_.width) config_.display.headless_width = *run_.width;
-    if (run_.height) config_.display.headless_height = *run_.height;
-    if (run_.rate_hz) config_.display.headless_rate_hz = *run_.rate_hz;
-    if (run_.catalogue) config_.catalogue.default_dir = *run_.catalogue;
-    if (run_.state_dir) {
-        config_.catalogue.state_dir = *run_.state_dir;
-        config_.catalogue.inbox_dir = *run_.state_dir / "inbox";
-    }
-    if (run_.snapshot_dir) config_.snapshot.dir = *run_.snapshot_dir;
-    if (run_.snapshot_every) config_.snapshot.every_n_frames = *run_.snapshot_every;
-
-    // "auto" draws with the table until the probe has chosen.
-    render_.method = config_.render.method == kAutoMethod ? "table" : config_.render.method;
-    render_.blend = config_.render.blend;
-    render_.cube_face = config_.render.cube_face;
-    render_.depth = config_.render.depth;
-    render_.cache_bytes = static_cast<std::size_t>(config_.render.view_cache_mb) << 20;
-    render_.stone_share = config_.picture.stone_share;
+    apply_run_overrides(run_, config_);
+    render_ = render_choice(config_);
 
     selection_ = std::make_unique<SceneSelection>(config_.backgrounds, config_.lightings);
     catalogues_ = std::make_unique<CatalogueFeed>(catalogue_setup(config_, resolved, kept_in));

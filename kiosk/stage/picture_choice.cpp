@@ -23,4 +23,15 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
     return o;
 }
 
+RenderChoice render_choice(const KioskConfig& config) {
+    RenderChoice render;
+    render.method = config.render.method == kAutoMethod ? "table" : config.render.method;
+    render.blend = config.render.blend;
+    render.cube_face = config.render.cube_face;
+    render.depth = config.render.depth;
+    render.cache_bytes = static_cast<std::size_t>(config.render.view_cache_mb) << 20;
+    render.stone_share = config.picture.stone_share;
+    return render;
+}
+
 }  // namespace gem::kiosk
