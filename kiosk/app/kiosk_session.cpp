@@ -334,9 +334,10 @@ bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
 gpu::FrameView KioskSession::frame_view(double now_s) {
     const glm::ivec2 size = display_->picture_size();
     gpu::FrameView view = scene_->frame_view(gestures_->view(), size);
-    auto camera = Camera::make(view.camera, view.framing_mm, size.x, size.y);
-    if (camera)
-        view.omega = turn_.next(camera.value().forward(), now_s);  // else the composer says why
+    // A view whose camera cannot be made is drawn as the surround; the composer says why.
+    if (auto camera = Camera::make(view.camera, view.framing_mm, size.x, size.y)) {
+        view.omega = turn_.next(camera.value().forward(), now_s);
+    }
     return view;
 }
 
