@@ -12,6 +12,12 @@ constexpr double kDegree = 3.14159265358979323846 / 180.0;
 
 }  // namespace
 
+glm::dvec3 view_forward(const CameraSettings& s) {
+    const double az = s.azimuth_deg * kDegree;
+    const double el = s.elevation_deg * kDegree;
+    return -glm::dvec3(std::cos(el) * std::sin(az), std::sin(el), std::cos(el) * std::cos(az));
+}
+
 Camera Camera::in_frame(const glm::dmat3& rotation, const glm::dvec3& position) const {
     Camera c = *this;
     const glm::dmat3 back = glm::transpose(rotation);
@@ -39,10 +45,7 @@ Result<Camera> Camera::make(const CameraSettings& s, double bounding_radius_mm, 
     }
     Camera cam;
     const double az = s.azimuth_deg * kDegree;
-    const double el = s.elevation_deg * kDegree;
-    const glm::dvec3 towards_eye(std::cos(el) * std::sin(az), std::sin(el),
-                                 std::cos(el) * std::cos(az));
-    cam.forward_ = -towards_eye;
+    cam.forward_ = view_forward(s);
     // Right stays horizontal and depends on azimuth only, so the basis has no singularity at
     // the poles: looking straight down, the image's up is the far side of the stone.
     const glm::dvec3 right0(std::cos(az), 0.0, -std::sin(az));

@@ -25,6 +25,10 @@ struct CameraSettings {
     glm::dvec2 shift{0.0};
 };
 
+// The direction the camera looks along (stone frame, unit): from its azimuth and elevation
+// alone, what Camera::forward() is without making the camera.
+glm::dvec3 view_forward(const CameraSettings& settings);
+
 class Camera {
   public:
     // `bounding_radius_mm`: radius of a sphere about the stone-frame origin holding the stone.

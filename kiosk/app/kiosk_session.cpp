@@ -332,12 +332,8 @@ bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
 }
 
 gpu::FrameView KioskSession::frame_view(double now_s) {
-    const glm::ivec2 size = display_->picture_size();
-    gpu::FrameView view = scene_->frame_view(gestures_->view(), size);
-    // A view whose camera cannot be made is drawn as the surround; the composer says why.
-    if (auto camera = Camera::make(view.camera, view.framing_mm, size.x, size.y)) {
-        view.omega = turn_.next(camera.value().forward(), now_s);
-    }
+    gpu::FrameView view = scene_->frame_view(gestures_->view(), display_->picture_size());
+    view.omega = turn_.next(view_forward(view.camera), now_s);
     return view;
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <optional>
 
 #include "geometry/cuts.hpp"
 #include "gpu/frame_composer.hpp"
@@ -51,13 +52,22 @@ gpu::FrameView front_view(const gpu::FrameRenderer& renderer) {
     return view;
 }
 
-TEST(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
-    auto ctx = gpu_test::context();
-    ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const Stone stone = diamond();
-    const Environment studio = Environment::studio();
-    auto renderer = loose_diamond(stone, studio);
-    ASSERT_TRUE(renderer.ok()) << renderer.error();
+// A loose diamond in the studio, drawn on the tests' context.
+class GpuFrameComposer : public ::testing::Test {
+  protected:
+    void SetUp() override {
+        auto ctx = gpu_test::context();
+        ASSERT_TRUE(ctx.ok()) << ctx.error();
+        auto made = loose_diamond(stone_, studio_);
+        ASSERT_TRUE(made.ok()) << made.error();
+        renderer_.emplace(std::move(made).value());
+    }
+    const Stone stone_ = diamond();
+    const Environment studio_ = Environment::studio();
+    std::optional<gpu::FrameRenderer> renderer_;
+};
+
+TEST_F(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
     const DisplayTransform display{ToneCurve::neutral, 0.0};
     auto picture = gpu::HdrPicture::make(kSide, kSide, {.samples = 4, .display = display});
     ASSERT_TRUE(picture.ok()) << picture.error();
@@ -69,8 +79,8 @@ TEST(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
 
     // A stone first, so that a picture left as it was would not pass.
     picture.value().begin_frame(false);
-    auto drawn = gpu::compose_frame({.renderer = &renderer.value(),
-                                     .view = front_view(renderer.value()),
+    auto drawn = gpu::compose_frame({.renderer = &*renderer_,
+                                     .view = front_view(*renderer_),
                                      .wait = gpu::FrameWait::frame,
                                      .picture = &picture.value()},
                                     target.value());
@@ -80,19 +90,18 @@ TEST(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
 
     // No view: the surround alone, no error.
     picture.value().begin_frame(false);
-    auto alone = gpu::compose_frame({.renderer = &renderer.value(), .picture = &picture.value()},
-                                    target.value());
+    auto alone =
+        gpu::compose_frame({.renderer = &*renderer_, .picture = &picture.value()}, target.value());
     ASSERT_TRUE(alone.ok()) << alone.error();
     EXPECT_FALSE(alone.value().stats);
     EXPECT_EQ(pixels_off(target.value().read(), surround), 0);
 
     // A view whose camera cannot be made (zoom 0): said in the frame, the surround shown.
-    gpu::FrameView broken = front_view(renderer.value());
+    gpu::FrameView broken = front_view(*renderer_);
     broken.camera.zoom = 0.0;
     picture.value().begin_frame(false);
     auto refused = gpu::compose_frame(
-        {.renderer = &renderer.value(), .view = broken, .picture = &picture.value()},
-        target.value());
+        {.renderer = &*renderer_, .view = broken, .picture = &picture.value()}, target.value());
     ASSERT_TRUE(refused.ok()) << refused.error();
     EXPECT_FALSE(refused.value().scene().ok());
     EXPECT_NE(refused.value().scene_error.find("camera"), std::string::npos)
@@ -100,26 +109,20 @@ TEST(GpuFrameComposer, WhereNoSceneIsDrawnThePictureShowsTheSurround) {
     EXPECT_EQ(pixels_off(target.value().read(), surround), 0);
 }
 
-TEST(GpuFrameComposer, AFrameStraightIntoATargetIsTheRenderersOwn) {
-    auto ctx = gpu_test::context();
-    ASSERT_TRUE(ctx.ok()) << ctx.error();
-    const Stone stone = diamond();
-    const Environment studio = Environment::studio();
-    auto renderer = loose_diamond(stone, studio);
-    ASSERT_TRUE(renderer.ok()) << renderer.error();
-    const gpu::FrameView view = front_view(renderer.value());
+TEST_F(GpuFrameComposer, AFrameStraightIntoATargetIsTheRenderersOwn) {
+    const gpu::FrameView view = front_view(*renderer_);
     auto camera = Camera::make(view.camera, view.framing_mm, kSide, kSide);
     ASSERT_TRUE(camera.ok()) << camera.error();
 
     auto own = gpu::RenderTarget::make(kSide, kSide);
     ASSERT_TRUE(own.ok()) << own.error();
     own.value().bind();
-    ASSERT_TRUE(renderer.value().render(camera.value(), gpu::FrameWait::frame).ok());
+    ASSERT_TRUE(renderer_->render(camera.value(), gpu::FrameWait::frame).ok());
     auto composed_target = gpu::RenderTarget::make(kSide, kSide);
     ASSERT_TRUE(composed_target.ok()) << composed_target.error();
-    auto composed = gpu::compose_frame(
-        {.renderer = &renderer.value(), .view = view, .wait = gpu::FrameWait::passes},
-        composed_target.value());
+    auto composed =
+        gpu::compose_frame({.renderer = &*renderer_, .view = view, .wait = gpu::FrameWait::passes},
+                           composed_target.value());
     ASSERT_TRUE(composed.ok()) << composed.error();
     ASSERT_TRUE(composed.value().scene().ok()) << composed.value().scene_error;
     // Timed pass by pass, as asked; no picture, so no finishing pass.

@@ -135,5 +135,25 @@ TEST(RenderCamera, AShiftMovesTheStonesCentreToItsPlaceInThePicture) {
     }
 }
 
+TEST(RenderCamera, TheViewDirectionWithoutACameraIsTheCamerasOwn) {
+    // By hand: straight above looks down −y; from azimuth 90° on the horizon (the eye on +x)
+    // it looks along −x; from azimuth 0° at 45° elevation, down and toward −z.
+    CameraSettings s;
+    EXPECT_NEAR(glm::length(view_forward(s) - glm::dvec3(0.0, -1.0, 0.0)), 0.0, 1e-12);
+    s.azimuth_deg = 90.0;
+    s.elevation_deg = 0.0;
+    EXPECT_NEAR(glm::length(view_forward(s) - glm::dvec3(-1.0, 0.0, 0.0)), 0.0, 1e-12);
+    s.azimuth_deg = 0.0;
+    s.elevation_deg = 45.0;
+    const double h = std::sqrt(0.5);
+    EXPECT_NEAR(glm::length(view_forward(s) - glm::dvec3(0.0, -h, -h)), 0.0, 1e-12);
+    // Roll, zoom and shift do not turn it.
+    s.roll_deg = 30.0;
+    s.zoom = 2.0;
+    s.shift = {0.3, -0.2};
+    EXPECT_NEAR(glm::length(view_forward(s) - Camera::make(s, 1.0, 64, 48).value().forward()), 0.0,
+                1e-12);
+}
+
 }  // namespace
 }  // namespace gem
