@@ -171,7 +171,7 @@ int main(int argc, char** argv) {
         ->check(CLI::ExistingFile);
     // The CPU's exact reference, or a GPU stone method by its registry name.
     std::vector<std::string> methods = {"reference"};
-    for (const gem::gpu::MethodEntry& m : gem::gpu::stone_methods()) methods.emplace_back(m.name);
+    for (const gem::gpu::MethodEntry* m : gem::gpu::stone_methods()) methods.emplace_back(m->name);
     app.add_option(
            "--method", o.method,
            "reference (CPU, exact) or a GPU stone method (" + gem::gpu::stone_method_names() + ")")

@@ -2,6 +2,7 @@
 
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 
 namespace gem::gpu {
@@ -22,13 +23,11 @@ Result<bool> BackgroundPass::draw(const Camera& camera, const EnvironmentCube& e
         glClear(GL_COLOR_BUFFER_BIT);
         return gl_check("background clear");
     }
-    program_.use();
-    set_camera_uniforms(program_, camera, 1.0);
+    const PipelineScope pass(Pipeline{&program_});
+    set_ray_uniforms(program_, camera);
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, environment.texture());
     program_.set("u_environment", 0);
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
     glBindVertexArray(empty_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
     return gl_check("background pass");

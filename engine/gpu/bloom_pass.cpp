@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 
 namespace gem::gpu {
@@ -141,11 +142,9 @@ Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& c
     level_regions(damage_.rewrite(content, whole), down, sum);
     const auto scissor = [](const PixelRect& r) { glScissor(r.x0, r.y0, r.width(), r.height()); };
     glEnable(GL_SCISSOR_TEST);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    PipelineScope pass(Pipeline{&down_});
     glBindVertexArray(empty_.get());
     glActiveTexture(GL_TEXTURE0);
-    down_.use();
     down_.set("u_source", 0);
     GLuint source = scene;
     glm::vec2 source_texel(1.0f / static_cast<float>(width_), 1.0f / static_cast<float>(height_));
@@ -166,7 +165,7 @@ Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& c
     glBindSampler(0, 0);
     // The smaller levels' sums where the content's glare reaches them, now or the last time:
     // elsewhere they hold the background's (the downsamples too, at every level).
-    up_.use();
+    pass.change(Pipeline{&up_});
     up_.set("u_source", 0);
     up_.set("u_own", 1);
     const std::size_t k = cut_level();
@@ -199,10 +198,8 @@ Result<bool> BloomPass::spread(const PixelRect& region) {
                             -1.0, 1.0, size_of(i));
     }
     glEnable(GL_SCISSOR_TEST);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
+    const PipelineScope pass(Pipeline{&up_});
     glBindVertexArray(empty_.get());
-    up_.use();
     up_.set("u_source", 0);
     up_.set("u_own", 1);
     for (std::size_t i = k; i-- > 0;) draw_sum(i, needed[i]);

@@ -8,8 +8,8 @@ namespace gem::gpu {
 
 namespace {
 
+// At rest between passes (pipeline.hpp), so every mask lets the clear through.
 void clear_to_surround() {
-    glDepthMask(GL_TRUE);
     glClearColor(kSurround.x, kSurround.y, kSurround.z, 1.0f);
     glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);

@@ -47,7 +47,6 @@ Result<bool> FrameRenderer::draw_kind_alone(std::size_t k, const Camera& camera,
     frame.piece_sight = nullptr;
     set_sight(frame, first);
     frame.scene_radius_mm = bounding_radius(frame.stone->vertices) * 1.01;
-    glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
     glClear(GL_DEPTH_BUFFER_BIT);
     return method_->draw_alone(k, frame, model);
@@ -272,9 +271,7 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     using Clock = std::chrono::steady_clock;
     const auto start = Clock::now();
     FrameStats stats;
-    glDepthMask(GL_TRUE);
     glClearDepthf(1.0f);
-    glStencilMask(0xff);
     glClearStencil(0);
     glClear(GL_DEPTH_BUFFER_BIT | GL_STENCIL_BUFFER_BIT);
     auto ok = background_->draw(camera, *environment_cube_, flat_background(camera));
@@ -317,9 +314,8 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // In a multisampled frame each sample holds its stone and facet, and each stone's pixel
     // traces each facet its samples show once, weighed by them (trace.frag).
     const VisibilityAttachment visibility = attach_visibility(camera, still);
-    // The target is off the framebuffer again, and the stencil test the visibility pass turns
-    // on off, however the stones' passes end; a frame copied from these (a stone drawn alone)
-    // is drawn facet by facet.
+    // The target is off the framebuffer again however the stones' passes end; a frame copied
+    // from these (a stone drawn alone) is drawn facet by facet.
     struct VisibilityEnd {
         std::vector<StoneFrame>& frames;
         const VisibilityTarget& target;
@@ -335,7 +331,6 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
         ~VisibilityEnd() {
             detach();
             for (StoneFrame& frame : frames) frame.visibility = {};
-            glDisable(GL_STENCIL_TEST);
         }
     } visibility_end{frames_, *visibility_, visibility.texture != 0};
     for (StoneFrame& frame : frames_) frame.visibility = visibility;
@@ -347,17 +342,16 @@ Result<FrameStats> FrameRenderer::render(const Camera& camera, FrameWait wait,
     // The metal in front of a stone takes its stencil back; in a multisampled frame it also
     // writes no stone into the target at the samples it takes (the stones' pass, which reads a
     // pixel's samples there, cannot read the stencil).
-    const bool metal_marks = visibility.samples > 0 && ring_ != nullptr;
+    MetalMarks metal_marks = MetalMarks::none;
     if (visibility.texture != 0) {
-        if (metal_marks) {
+        metal_marks = visibility.samples > 0 && ring_ != nullptr ? MetalMarks::stencil_and_target
+                                                                 : MetalMarks::stencil;
+        if (metal_marks == MetalMarks::stencil_and_target) {
             const GLenum both[] = {GL_COLOR_ATTACHMENT0, GL_COLOR_ATTACHMENT1};
             glDrawBuffers(2, both);
         } else {
             visibility_end.detach();
         }
-        glEnable(GL_STENCIL_TEST);
-        glStencilFunc(GL_ALWAYS, 0, 0xff);
-        glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
         stats.stones_by_visibility = true;
     }
     if (!depth) return Error{depth.error()};

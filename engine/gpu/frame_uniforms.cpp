@@ -45,9 +45,6 @@ glm::mat4 view_projection(const Camera& camera, double scene_radius_mm) {
     return glm::mat4(m);
 }
 
-namespace {
-
-// Everything of camera.glsl but u_view_projection: the pixel ray's uniforms.
 void set_ray_uniforms(const Program& program, const Camera& camera) {
     program.set("u_cam_forward", glm::vec3(camera.forward()));
     program.set("u_cam_right", glm::vec3(camera.right()));
@@ -58,13 +55,6 @@ void set_ray_uniforms(const Program& program, const Camera& camera) {
     program.set("u_cam_distance", static_cast<float>(camera.distance()));
     program.set("u_cam_start", static_cast<float>(camera.ray_start()));
     program.set("u_viewport_px", glm::vec2(camera.width(), camera.height()));
-}
-
-}  // namespace
-
-void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm) {
-    program.set("u_view_projection", view_projection(camera, scene_radius_mm));
-    set_ray_uniforms(program, camera);
 }
 
 Camera stone_camera(const StoneFrame& frame) {
@@ -145,22 +135,26 @@ SamplerBinding::~SamplerBinding() {
     glBindSampler(unit_, 0);
 }
 
-SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
+SamplerBinding set_surface_uniforms(const Program& program, const StoneFrame& frame, int unit) {
     glActiveTexture(GL_TEXTURE0 + unit);
     glBindTexture(GL_TEXTURE_CUBE_MAP, frame.environment->texture());
     program.set("u_environment", unit);
-    program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
     program.set("u_frame_rotation", glm::mat3(frame.placement.rotation));
-    program.set("u_frame_origin", glm::vec3(frame.placement.position));
     const ShadingSettings& s = frame.shading;
     set_light_uniforms(program, s.lights, frame.placement);
     program.set("u_k_s", static_cast<float>(s.k_s));
-    program.set("u_k_st", static_cast<float>(s.k_st));
     program.set("u_h", static_cast<float>(s.h));
     program.set("u_alpha", static_cast<float>(s.alpha));
     program.set("u_stone_colour", glm::vec3(frame.material.body_colour));
-    program.set("u_absorption", glm::vec3(frame.material.absorption_per_mm));
     return SamplerBinding(static_cast<GLuint>(unit), frame.environment->sharp_sampler());
+}
+
+SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& frame, int unit) {
+    program.set("u_cube_half_mm", static_cast<float>(frame.cube_half_mm));
+    program.set("u_frame_origin", glm::vec3(frame.placement.position));
+    program.set("u_k_st", static_cast<float>(frame.shading.k_st));
+    program.set("u_absorption", glm::vec3(frame.material.absorption_per_mm));
+    return set_surface_uniforms(program, frame, unit);
 }
 
 }  // namespace gem::gpu

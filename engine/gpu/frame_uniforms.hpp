@@ -58,15 +58,15 @@ struct StoneFrame {
 // The frame's camera as the stone sees it: its rays in the stone's frame (Camera::in_frame).
 Camera stone_camera(const StoneFrame& frame);
 
-// Sets camera.glsl's uniforms for drawing the stone of `frame` in its own frame: the stone's
-// camera, and a u_view_projection that places the stone's vertices in the piece, so the depth
-// of every stone and of the metal is measured alike.
+// Sets camera.glsl's uniforms for tracing the stone of `frame` in its own frame: the stone's
+// camera, and stone.vert's u_view_projection that places the stone's vertices in the piece, so the
+// depth of every stone and of the metal is measured alike.
 void set_camera_uniforms(const Program& program, const StoneFrame& frame);
 // That u_view_projection alone: the frame's view_projection() times the stone's placement.
 glm::mat4 stone_view_projection(const StoneFrame& frame);
 
-// Sets camera.glsl's uniforms, u_view_projection among them.
-void set_camera_uniforms(const Program& program, const Camera& camera, double scene_radius_mm);
+// Sets camera.glsl's uniforms: each pixel's ray of `camera`.
+void set_ray_uniforms(const Program& program, const Camera& camera);
 
 // The matrix that rasterises exactly what Camera::ray sees: clip x and y span the image
 // (right, up), depth runs front to back over the sphere of radius `scene_radius_mm` about the
@@ -106,8 +106,14 @@ class SamplerBinding {
     GLuint unit_;
 };
 
-// Binds the environment cube to texture unit `unit`, with its sharp sampler for as long as
-// the binding returned lives: keep it until the stone's draws are made.
+// What every stone method's shading reads of `frame` (phong's too): the environment cube on
+// texture unit `unit`, with its sharp sampler for as long as the binding returned lives (keep
+// it until the stone's draws are made), the stone's frame, the lights, k_s, h, alpha and the
+// stone's colour.
+[[nodiscard]] SamplerBinding set_surface_uniforms(const Program& program, const StoneFrame& frame,
+                                                  int unit);
+// The traced methods' shading.glsl: the surface's uniforms, and the cube's size, the stone's
+// place, k_st and absorption.
 [[nodiscard]] SamplerBinding set_shading_uniforms(const Program& program, const StoneFrame& frame,
                                                   int unit);
 

@@ -7,6 +7,7 @@
 
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_extensions.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 #include "util/elapsed.hpp"
 #include "util/radical_inverse.hpp"
@@ -265,17 +266,13 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         const PixelRect rewritten = mean_damage_.rewrite(content, whole);
         const std::optional<PixelRect> rows = band();
         scissor(rows ? intersected(rewritten, *rows) : rewritten);
-        glDisable(GL_DEPTH_TEST);
-        glEnable(GL_BLEND);
+        const PipelineScope pass(Pipeline{&*accumulate_, Blend::constant_alpha});
         glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(schedule_.index() + 1));
-        glBlendFunc(GL_CONSTANT_ALPHA, GL_ONE_MINUS_CONSTANT_ALPHA);
-        accumulate_->use();
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, resolved_.get());
         accumulate_->set("u_scene", 0);
         glBindVertexArray(empty_.get());
         glDrawArrays(GL_TRIANGLES, 0, 3);
-        glDisable(GL_BLEND);
     }
     if (schedule_.index() >= 0) scene = mean_.get();
     lap(times ? &times->resolve_ms : nullptr);
@@ -313,9 +310,7 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
 
     picture.bind();
     scissor(target_region_);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_BLEND);
-    finish_.use();
+    const PipelineScope pass(Pipeline{&finish_});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, scene);
     finish_.set("u_scene", 0);

@@ -6,6 +6,7 @@
 
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 #include "optics/microfacet.hpp"
 
@@ -28,15 +29,12 @@ Result<bool> filter(const EnvironmentCube& source, EnvironmentCube& target, doub
     Framebuffer framebuffer = make_framebuffer();
     glBindFramebuffer(GL_FRAMEBUFFER, framebuffer.get());
     glViewport(0, 0, target.face_size(), target.face_size());
-    program.value().use();
+    const PipelineScope pass(Pipeline{&program.value()});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, source.texture());
     program.value().set("u_source", 0);
     program.value().set("u_source_face", static_cast<float>(source.face_size()));
     program.value().set("u_alpha", static_cast<float>(ggx_alpha(roughness)));
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    glDisable(GL_CULL_FACE);
     VertexArray empty = make_vertex_array();  // fullscreen.vert needs no attributes
     glBindVertexArray(empty.get());
     for (int face = 0; face < 6; ++face) {
@@ -52,7 +50,6 @@ Result<bool> filter(const EnvironmentCube& source, EnvironmentCube& target, doub
         program.value().set("u_up", glm::vec3(basis.up));
         glDrawArrays(GL_TRIANGLES, 0, 3);
     }
-    glBindVertexArray(0);
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);
     return gl_check("metal environment: filter");
 }

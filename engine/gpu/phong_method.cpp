@@ -36,44 +36,26 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     }
     const Program& program =
         *programs_.find(light_count_feature(frame.shading.lights) | specular_power_);
-    program.use();
-    set_camera_uniforms(program, frame);
+    // 1. Forget older depth inside the stone's outline (every fragment written at the far
+    //    plane), so the front pass below keeps the nearest front facet however the buffer
+    //    started.
+    Pipeline forget{&program, Blend::off, {true, GL_ALWAYS, true, true}, Cull::back};
+    forget.colour_write = false;
+    PipelineScope pass(forget);
+    program.set("u_view_projection", stone_view_projection(frame));
     const bool at_infinity = camera.orthographic();
     program.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
                                      : glm::vec3(-camera.forward() * camera.distance()));
     program.set("u_eye_at_infinity", at_infinity ? 1 : 0);
-    const SamplerBinding sharp = set_shading_uniforms(program, frame, 0);
-    geometry_.bind(program, 1);
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);
-    glEnable(GL_DEPTH_TEST);
-
-    // 1. Forget older depth inside the stone's outline (depth range [1, 1] writes the far
-    //    plane), so the front pass below keeps the nearest front facet however the buffer
-    //    started.
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_ALWAYS);
-    glDepthRangef(1.0f, 1.0f);
-    glCullFace(GL_BACK);
+    const SamplerBinding sharp = set_surface_uniforms(program, frame, 0);
+    geometry_.bind_block();
     geometry_.draw_triangles();
-    glDepthRangef(0.0f, 1.0f);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
-
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    // 2. Back facets, seen through the front ones: blended, no depth.
-    glDepthMask(GL_FALSE);
-    glCullFace(GL_FRONT);
+    // 2. Back facets, seen through the front ones: blended, depth neither tested nor written.
+    pass.change({&program, Blend::alpha, {true, GL_ALWAYS, false}, Cull::front});
     geometry_.draw_triangles();
     // 3. Front facets over them, keeping their depth.
-    glDepthMask(GL_TRUE);
-    glDepthFunc(GL_LESS);
-    glCullFace(GL_BACK);
+    pass.change({&program, Blend::alpha, {true, GL_LESS, true}, Cull::back});
     geometry_.draw_triangles();
-
-    glDisable(GL_CULL_FACE);
-    glDisable(GL_BLEND);
     return gl_check("phong pass");
 }
 
@@ -108,5 +90,26 @@ Result<std::unique_ptr<StoneMethod>> make_phong_stones(const FrameSetup& setup,
     }
     return std::unique_ptr<StoneMethod>(std::move(method));
 }
+
+namespace {
+
+std::vector<ProgramSpec> phong_programs() {
+    // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
+    return {{"phong",
+             {"stone.vert"},
+             {"stone.glsl", "specular.glsl", "phong.frag"},
+             {},
+             kLightCountBits | kSpecularPowerBits}};
+}
+
+std::vector<MethodRung> phong_rungs(const RungContext&) {
+    return {{"phong", false, -1, "phong"}};
+}
+
+}  // namespace
+
+extern const MethodEntry kPhongMethod;
+constinit const MethodEntry kPhongMethod{"phong",           false,          true,       false, true,
+                                         make_phong_stones, phong_programs, phong_rungs};
 
 }  // namespace gem::gpu

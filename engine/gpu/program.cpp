@@ -1,9 +1,30 @@
 #include "gpu/program.hpp"
 
+#include <algorithm>
+#include <mutex>
+#include <regex>
+#include <utility>
+
 #include "gpu/shader_sources.hpp"
 
 namespace gem::gpu {
 namespace {
+
+std::mutex unknown_mutex;
+std::vector<std::string> unknown_names;
+
+// The names a chunk declares as plain uniforms ("uniform highp vec3 u_eye;", arrays too), in
+// every branch of its #ifs: a variant's defines decide which the GL keeps. A uniform block's
+// members are set through its buffer, not by name.
+void add_declared(std::string_view chunk, std::vector<std::string>& declared) {
+    static const std::regex declaration(
+        R"(\buniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)\s*[\[;])");
+    const std::string text(chunk);
+    for (auto it = std::sregex_iterator(text.begin(), text.end(), declaration);
+         it != std::sregex_iterator(); ++it) {
+        declared.push_back((*it)[1].str());
+    }
+}
 
 std::string join(const std::vector<std::string>& names) {
     std::string out;
@@ -25,8 +46,8 @@ std::string info_log(GLuint object, bool program) {
 }
 
 // Compiles one stage; the shader object is returned on success and deleted on failure.
-Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
-                       const std::vector<std::string>& names) {
+Result<GLuint> compile(const ProgramSpec& spec, GLenum stage, const std::vector<std::string>& names,
+                       std::vector<std::string>& declared) {
     const char* stage_name = stage == GL_VERTEX_SHADER ? "vertex" : "fragment";
     const std::string where =
         "program '" + spec.name + "', " + stage_name + " shader " + join(names);
@@ -41,6 +62,7 @@ Result<GLuint> compile(const ProgramSpec& spec, GLenum stage,
     for (std::size_t i = 0; i < names.size(); ++i) {
         auto chunk = shader_text(names[i], spec.sources);
         if (!chunk) return Error{where + ": " + chunk.error()};
+        add_declared(chunk.value(), declared);
         text += "#line 1 " + std::to_string(i) + "\n";
         text += chunk.value();
         text += "\n";
@@ -74,9 +96,10 @@ Result<std::string_view> shader_text(std::string_view name, const std::vector<Sh
 }
 
 Result<Program> Program::build(const ProgramSpec& spec) {
-    auto vertex = compile(spec, GL_VERTEX_SHADER, spec.vertex);
+    std::vector<std::string> declared;
+    auto vertex = compile(spec, GL_VERTEX_SHADER, spec.vertex, declared);
     if (!vertex) return Error{vertex.error()};
-    auto fragment = compile(spec, GL_FRAGMENT_SHADER, spec.fragment);
+    auto fragment = compile(spec, GL_FRAGMENT_SHADER, spec.fragment, declared);
     if (!fragment) {
         glDeleteShader(vertex.value());
         return Error{fragment.error()};
@@ -96,15 +119,34 @@ Result<Program> Program::build(const ProgramSpec& spec) {
         return Error{"program '" + spec.name + "' does not link:\n" +
                      info_log(p.program_.get(), true)};
     }
+    p.resolve_uniforms(std::move(declared));
     return p;
+}
+
+void Program::resolve_uniforms(std::vector<std::string> declared) {
+    std::sort(declared.begin(), declared.end());
+    declared.erase(std::unique(declared.begin(), declared.end()), declared.end());
+    for (std::string& name : declared) {
+        const GLint location = glGetUniformLocation(program_.get(), name.c_str());
+        locations_.emplace(std::move(name), location);
+    }
 }
 
 GLint Program::uniform(const char* name) const {
     auto it = locations_.find(std::string_view(name));
     if (it != locations_.end()) return it->second;
-    const GLint location = glGetUniformLocation(program_.get(), name);
-    locations_.emplace(name, location);
-    return location;
+    const std::string unknown =
+        "program '" + name_ + "' sets '" + name + "', which its sources do not declare";
+    const std::lock_guard lock(unknown_mutex);
+    if (std::find(unknown_names.begin(), unknown_names.end(), unknown) == unknown_names.end()) {
+        unknown_names.push_back(unknown);
+    }
+    return -1;
+}
+
+std::vector<std::string> take_unknown_uniforms() {
+    const std::lock_guard lock(unknown_mutex);
+    return std::exchange(unknown_names, {});
 }
 
 }  // namespace gem::gpu

@@ -43,11 +43,13 @@ class Program {
 
     GLuint id() const { return program_.get(); }
     const std::string& name() const { return name_; }
-    void use() const { glUseProgram(program_.get()); }
-    // -1 when the program has no such active uniform (the driver may drop unused ones).
+    // The location resolved when the program linked; -1 where its sources declare the name but
+    // the GL dropped it (compiled out by a variant's defines, or unused). A name its sources do
+    // not declare is a stale or misspelt one: -1 too, and recorded (take_unknown_uniforms).
     GLint uniform(const char* name) const;
 
-    // Setters on the program in use; a missing uniform is silently skipped, as GL does.
+    // Setters on the program in use (its pass's pipeline, pipeline.hpp); a location of -1 is
+    // skipped, as GL does.
     void set(const char* name, int v) const { glUniform1i(uniform(name), v); }
     void set(const char* name, std::uint32_t v) const { glUniform1ui(uniform(name), v); }
     void set(const char* name, float v) const { glUniform1f(uniform(name), v); }
@@ -66,19 +68,25 @@ class Program {
 
   private:
     Program() = default;
+    void resolve_uniforms(std::vector<std::string> declared);
     ProgramHandle program_;
     std::string name_;
     // Looked up by the caller's string without making a std::string of it (heterogeneous
     // lookup): a name longer than the small-string buffer would otherwise allocate on every
-    // uniform set of every frame.
+    // uniform set of every frame. Every name its sources declare, -1 where the GL has none.
     struct NameHash {
         using is_transparent = void;
         std::size_t operator()(std::string_view s) const noexcept {
             return std::hash<std::string_view>{}(s);
         }
     };
-    mutable std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
+    std::unordered_map<std::string, GLint, NameHash, std::equal_to<>> locations_;
 };
+
+// Every "program 'x' sets 'u_y', which its sources do not declare" since the last call, once
+// each, and forgets them: the GL tests' main (tests/support/gl_test_main.cpp) fails a test
+// that leaves one.
+std::vector<std::string> take_unknown_uniforms();
 
 // The text of one embedded source, `own` (ProgramSpec::sources) searched before the engine's;
 // an error names a missing one.

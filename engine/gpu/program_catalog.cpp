@@ -1,55 +1,24 @@
 #include "gpu/program_catalog.hpp"
 
 #include "gpu/program_variants.hpp"
+#include "gpu/stone_method.hpp"
 
 namespace gem::gpu {
-namespace {
 
-// A stone method's fragment shader: the shading, what a piece's still frames follow through
-// the piece (stone_sight.glsl), then the method's own file.
-std::vector<std::string> stone_sources(const char* method) {
+std::vector<std::string> stone_method_sources(const char* main_file) {
     return {"camera.glsl", "texel.glsl",      "stone.glsl",       "specular.glsl", "shading.glsl",
-            "metal.glsl",  "piece_path.glsl", "stone_sight.glsl", method};
+            "metal.glsl",  "piece_path.glsl", "stone_sight.glsl", main_file};
 }
 
-}  // namespace
-
 std::vector<ProgramSpec> all_program_specs() {
-    constexpr std::uint32_t kTableFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
-    constexpr std::uint32_t kTraceFeatures =
-        kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility | kVisibilitySamples;
-    return {
+    std::vector<ProgramSpec> specs{
         {"background", {"fullscreen.vert"}, {"camera.glsl", "background.frag"}, {}},
-        // The thesis' shading stage from ray-tables (table_method.hpp).
-        // Every stone method draws the stone pass (stone.vert, stone_geometry.hpp) and reads
-        // the facets from stone.glsl; each differs in its fragment shader's last file.
-        // In a piece's still frames a method's exits follow the piece (stone_sight.glsl).
-        {"table", {"stone.vert"}, stone_sources("table.frag"), {}, kTableFeatures},
-        {"table_non_convex",
-         {"stone.vert"},
-         stone_sources("table.frag"),
-         {"NON_CONVEX"},
-         kTableFeatures},
-        // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
-        {"trace", {"stone.vert"}, stone_sources("trace.frag"), {}, kTraceFeatures},
-        // A non-convex stone's fire is traced per channel in a still view only.
-        {"trace_non_convex",
-         {"stone.vert"},
-         stone_sources("trace.frag"),
-         {"NON_CONVEX"},
-         kShadingFeatures | kFireExact | kVisibility | kVisibilitySamples},
         // The stones' depth alone, before the metal and the shading (StoneMethod::draw_depth).
         {"stone_depth", {"stone.vert"}, {"stone_depth.frag"}, {}},
         // The stones' depth with each pixel's stone and entry facet (frame_renderer.hpp).
         {"stone_visibility", {"stone.vert"}, {"stone_visibility.frag"}, {"VISIBILITY_PASS"}},
         // The metal's depth alone (RingRenderer::draw), before it is shaded where it is seen.
         {"ring_depth", {"ring.vert"}, {"stone_depth.frag"}, {}},
-        // The alpha-blended Phong baseline, thesis fig. 8.17 (phong_method.hpp).
-        {"phong",
-         {"stone.vert"},
-         {"stone.glsl", "specular.glsl", "phong.frag"},
-         {},
-         kLightCountBits | kSpecularPowerBits},
         // The ring's metal, physically based (ring_renderer.hpp).
         {"ring",
          {"ring.vert"},
@@ -66,6 +35,11 @@ std::vector<ProgramSpec> all_program_specs() {
         {"accumulate", {"fullscreen.vert"}, {"accumulate.frag"}, {}},
         {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
     };
+    // Each stone method's own, listed from the registry.
+    for (const MethodEntry* method : stone_methods()) {
+        for (ProgramSpec& spec : method->programs()) specs.push_back(std::move(spec));
+    }
+    return specs;
 }
 
 Result<Program> build_program(const std::string& name, const std::vector<std::string>& defines,

@@ -9,6 +9,7 @@
 #include "gpu/frame_uniforms.hpp"
 #include "gpu/framebuffer_scope.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 #include "gpu/visibility_target.hpp"
 #include "optics/microfacet.hpp"
@@ -135,36 +136,33 @@ void RingRenderer::set_metal_uniforms(const Program& program, const ShadingSetti
 
 void RingRenderer::draw_mesh(const Program& ring, const glm::mat4& view_projection,
                              const glm::vec3& eye, bool eye_at_infinity,
-                             const ShadingSettings& lights, bool cull_back,
-                             bool depth_first) const {
-    if (cull_back) {
-        glEnable(GL_CULL_FACE);
-        glCullFace(GL_BACK);
-    } else {
-        glDisable(GL_CULL_FACE);
-    }
-    glEnable(GL_DEPTH_TEST);
-    glDepthMask(GL_TRUE);
+                             const ShadingSettings& lights, bool cull_back, MetalMarks marks,
+                             int piece_sample) const {
+    const bool depth_first = piece_sample >= 1;
+    // Opaque, depth-tested and written; where the stones go by visibility, no stone in their
+    // stencil where the metal is drawn.
+    Pipeline shade{&ring,
+                   Blend::off,
+                   {true, depth_first ? GLenum{GL_LEQUAL} : GLenum{GL_LESS}, true},
+                   cull_back ? Cull::back : Cull::off};
+    if (marks != MetalMarks::none) shade.stencil = {true, GL_ALWAYS, 0, GL_REPLACE};
+    Pipeline depth_alone = shade;
+    depth_alone.program = &depth_;
+    depth_alone.depth.func = GL_LESS;
+    depth_alone.colour_write = false;
+    PipelineScope pass(depth_first ? depth_alone : shade);
     glBindVertexArray(vertex_array_.get());
     if (depth_first) {
-        depth_.use();
         depth_.set("u_view_projection", view_projection);
-        glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-        glDepthFunc(GL_LESS);
         glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-        glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+        pass.change(shade);
     }
-    ring.use();
     ring.set("u_view_projection", view_projection);
     ring.set("u_eye", eye);
     ring.set("u_eye_at_infinity", eye_at_infinity ? 1 : 0);
     set_metal_uniforms(ring, lights, 0);
-    glDisable(GL_BLEND);
-    glDepthFunc(depth_first ? GL_LEQUAL : GL_LESS);
+    if (depth_first) set_path_uniforms(ring, lights, piece_sample, 2);
     glDrawElements(GL_TRIANGLES, index_count_, GL_UNSIGNED_INT, nullptr);
-    glDepthFunc(GL_LESS);
-    glBindVertexArray(0);
-    glDisable(GL_CULL_FACE);
 }
 
 void RingRenderer::set_path_uniforms(const Program& program, const ShadingSettings& lights,
@@ -183,7 +181,6 @@ void RingRenderer::set_path_uniforms(const Program& program, const ShadingSettin
     program.set("u_piece_k_s", static_cast<float>(lights.k_s));
     program.set("u_piece_k_st", static_cast<float>(lights.k_st));
     program.set("u_sample", still_sample - 1);
-    program.set("u_environment_mean", environment_mean_);
     // Far above a float's rounding of the metal's millimetres, far below a pixel.
     program.set("u_ray_offset_mm", static_cast<float>(2e-5 * std::max(radius_mm_, 1.0)));
 }
@@ -192,11 +189,13 @@ void RingRenderer::set_piece_sight_uniforms(const Program& program, const Shadin
                                             int still_sample, int first_unit) const {
     set_metal_uniforms(program, lights, first_unit);
     set_path_uniforms(program, lights, still_sample, first_unit + 2);
+    // By which a stone chooses what to follow (stone_sight.glsl).
+    program.set("u_environment_mean", environment_mean_);
 }
 
 Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
                                 const ShadingSettings& lights_from, int still_sample,
-                                bool marks_visibility) const {
+                                MetalMarks marks) const {
     if (index_count_ == 0) return true;
     // Orthographic: every pixel looks along forward, so the eye is a direction (toward it).
     const bool at_infinity = camera.orthographic();
@@ -210,20 +209,21 @@ Result<bool> RingRenderer::draw(const Camera& camera, double scene_radius_mm,
     // The still view's first frame is the moving view's own (multisampled, which llvmpipe
     // shades sample by sample: the halo's 11 s at 1920×1080 with its metal seeing the piece).
     if (!follows_piece(still_sample)) {
-        const Program* ring = ring_.find(lights | (marks_visibility ? kVisibility : 0u));
+        const bool marks_target = marks == MetalMarks::stencil_and_target;
+        const Program* ring = ring_.find(lights | (marks_target ? kVisibility : 0u));
         if (ring == nullptr) return Error{"ring pass: no program marks the stones' visibility"};
-        draw_mesh(*ring, vp, eye, at_infinity, lights_from, closed_);
+        draw_mesh(*ring, vp, eye, at_infinity, lights_from, closed_, marks);
         return gl_check("ring pass");
     }
-    if (marks_visibility) return Error{"ring pass: a frame seeing its piece marks no visibility"};
+    if (marks == MetalMarks::stencil_and_target) {
+        return Error{"ring pass: a frame seeing its piece marks no visibility target"};
+    }
     // Its rays through the piece cost far more than a depth pass: the metal's depth is drawn
     // alone first, so that only the metal seen is shaded (bench_pieces' still metal, halo 823
     // against 656 ms, band 889 against 502). A moving frame's metal shades cheaply enough that
     // the depth pass costs more than it saves (halo 14.6 against 18.6 ms).
     const Program& ring = *ring_sees_piece_.find(kSeesPiece | lights);
-    ring.use();
-    set_path_uniforms(ring, lights_from, still_sample, 2);
-    draw_mesh(ring, vp, eye, at_infinity, lights_from, closed_, true);
+    draw_mesh(ring, vp, eye, at_infinity, lights_from, closed_, marks, still_sample);
     return gl_check("ring pass (seeing its piece)");
 }
 
@@ -259,31 +259,30 @@ Result<bool> RingRenderer::render_environment_cube(const EnvironmentCube& backgr
                          " cannot be rendered to (framebuffer status " + std::to_string(status) +
                          "; RGBA16F needs EXT_color_buffer_half_float or EXT_color_buffer_float)"};
         }
-        glDepthMask(GL_TRUE);
         glClear(GL_DEPTH_BUFFER_BIT);
         // background.frag with a camera at the centre: a perspective ray through tangent-unit
         // image coordinates ±1 is exactly the face's 90° frustum.
         const CubeFaceBasis basis = cube_face_basis(face);
-        background_.use();
-        background_.set("u_cam_forward", glm::vec3(basis.forward));
-        background_.set("u_cam_right", glm::vec3(basis.right));
-        background_.set("u_cam_up", glm::vec3(basis.up));
-        background_.set("u_cam_half", glm::vec2(1.0f));
-        background_.set("u_cam_shift", glm::vec2(0.0f));
-        background_.set("u_cam_distance", 1.0f);
-        glActiveTexture(GL_TEXTURE0);
-        glBindTexture(GL_TEXTURE_CUBE_MAP, background.texture());
-        background_.set("u_environment", 0);
-        glDisable(GL_BLEND);
-        glDisable(GL_DEPTH_TEST);
-        glBindVertexArray(vertex_array_.get());  // no attributes: fullscreen.vert needs none
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        {
+            const PipelineScope background_pass(Pipeline{&background_});
+            background_.set("u_cam_forward", glm::vec3(basis.forward));
+            background_.set("u_cam_right", glm::vec3(basis.right));
+            background_.set("u_cam_up", glm::vec3(basis.up));
+            background_.set("u_cam_half", glm::vec2(1.0f));
+            background_.set("u_cam_shift", glm::vec2(0.0f));
+            background_.set("u_cam_distance", 1.0f);
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_CUBE_MAP, background.texture());
+            background_.set("u_environment", 0);
+            glBindVertexArray(vertex_array_.get());  // no attributes: fullscreen.vert needs none
+            glDrawArrays(GL_TRIANGLES, 0, 3);
+        }
         if (index_count_ > 0) {
             // Not culled: a cube face's projection mirrors the winding, and the faces are
             // drawn only when the scene changes.
             draw_mesh(*ring_.find(light_count_feature(lights_from.lights)),
                       cube_face_projection(face, near_mm, far_mm) * seen_from, glm::vec3(centre),
-                      false, lights_from, false);
+                      false, lights_from, false, MetalMarks::none);
         }
     }
     glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_TEXTURE_2D, 0, 0);

@@ -29,6 +29,8 @@ namespace gem::gpu {
 // near_mm .. far_mm along forward onto -1..1 as a GL perspective does.
 glm::mat4 cube_face_projection(int face, double near_mm, double far_mm);
 
+enum class MetalMarks : std::uint8_t { none, stencil, stencil_and_target };
+
 class RingRenderer {
   public:
     // An empty mesh is allowed: a loose stone, where only the environment is drawn into cubes.
@@ -46,12 +48,13 @@ class RingRenderer {
     // scene_radius_mm), so the ring must lie inside that sphere. `still_sample`: the frame's
     // number in a still view, whose reflected rays follow the piece (see_piece()) from its
     // second frame on; -1 while the view moves, which draws the split sum alone.
-    // `marks_visibility` (a multisampled frame's, not seeing its piece): the bound framebuffer's
-    // second draw buffer is the stones' visibility target, where the metal writes no stone at
-    // the samples it takes (frame_renderer.cpp).
+    // `marks`: in a frame whose stones go by visibility, the metal takes their stencil back
+    // where it is drawn; in a multisampled one (not seeing its piece) the bound framebuffer's
+    // second draw buffer is the stones' visibility target too, where the metal writes no stone
+    // at the samples it takes (frame_renderer.cpp).
     Result<bool> draw(const Camera& camera, double scene_radius_mm,
                       const ShadingSettings& lights_from, int still_sample = -1,
-                      bool marks_visibility = false) const;
+                      MetalMarks marks = MetalMarks::none) const;
 
     // Whether a still view's rays may follow the piece (see_piece() succeeded).
     bool sees_piece() const { return sight_ && sight_->triangle_count() > 0; }
@@ -76,10 +79,11 @@ class RingRenderer {
   private:
     RingRenderer(ProgramVariants ring, Program depth, Program background,
                  MetalEnvironment environment);
-    // `depth_first`: the metal's depth drawn alone first, then shaded only where it is seen.
+    // `piece_sample` ≥ 1: the still frame whose rays follow the piece (`ring` sees it): the
+    // metal's depth drawn alone first, then shaded only where it is seen.
     void draw_mesh(const Program& ring, const glm::mat4& view_projection, const glm::vec3& eye,
                    bool eye_at_infinity, const ShadingSettings& lights, bool cull_back,
-                   bool depth_first = false) const;
+                   MetalMarks marks, int piece_sample = -1) const;
     // metal.glsl's uniforms, its two textures on `first_unit` and the next.
     void set_metal_uniforms(const Program& program, const ShadingSettings& lights,
                             int first_unit) const;

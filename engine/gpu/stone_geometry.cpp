@@ -141,58 +141,45 @@ void StoneGeometry::attach(const Program& program) const {
     if (index != GL_INVALID_INDEX) glUniformBlockBinding(program.id(), index, kStoneBlockBinding);
 }
 
-void StoneGeometry::bind(const Program& program, int unit) const {
+void StoneGeometry::bind_block() const {
     glBindBufferBase(GL_UNIFORM_BUFFER, kStoneBlockBinding, block_.get());
+}
+
+void StoneGeometry::bind(const Program& program, int unit) const {
+    bind_block();
+    if (convex_) return;
     glActiveTexture(GL_TEXTURE0 + unit);
-    if (convex_) {
-        glBindTexture(GL_TEXTURE_CUBE_MAP, exit_guess_.get());
-        program.set("u_exit_guess", unit);
-    } else {
-        glBindTexture(GL_TEXTURE_2D, triangles_.get());
-        program.set("u_triangles", unit);
-        program.set("u_triangle_count", triangle_count_);
-    }
+    glBindTexture(GL_TEXTURE_2D, triangles_.get());
+    program.set("u_triangles", unit);
+    program.set("u_triangle_count", triangle_count_);
 }
 
-void StoneGeometry::draw_front_faces() const {
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    draw_front_triangles(GL_LEQUAL);
-    glDisable(GL_BLEND);
+void StoneGeometry::bind_exit_guess(const Program& program, int unit) const {
+    if (!convex_) return;
+    glActiveTexture(GL_TEXTURE0 + unit);
+    glBindTexture(GL_TEXTURE_CUBE_MAP, exit_guess_.get());
+    program.set("u_exit_guess", unit);
 }
 
-void StoneGeometry::draw_depth() const {
-    glDisable(GL_BLEND);
-    glColorMask(GL_FALSE, GL_FALSE, GL_FALSE, GL_FALSE);
-    draw_front_triangles(GL_LESS);
-    glColorMask(GL_TRUE, GL_TRUE, GL_TRUE, GL_TRUE);
+Pipeline StoneGeometry::front_faces(const Program& program) {
+    return {&program, Blend::alpha, {true, GL_LEQUAL, true}, Cull::back};
 }
 
-void StoneGeometry::draw_visibility(std::uint32_t stone_id) const {
-    glDisable(GL_BLEND);
-    glEnable(GL_STENCIL_TEST);
-    glStencilMask(0xff);
-    glStencilFunc(GL_ALWAYS, static_cast<GLint>(stone_id), 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_REPLACE);
-    draw_front_triangles(GL_LESS);
+Pipeline StoneGeometry::depth_only(const Program& program) {
+    Pipeline p{&program, Blend::off, {true, GL_LESS, true}, Cull::back};
+    p.colour_write = false;
+    return p;
 }
 
-void StoneGeometry::draw_front_triangles(GLenum depth_test) const {
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(depth_test);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_CULL_FACE);
-    glFrontFace(GL_CCW);
-    glCullFace(GL_BACK);
-    draw_triangles();
-    glDisable(GL_CULL_FACE);
-    glDepthFunc(GL_LESS);
+Pipeline StoneGeometry::visibility(const Program& program, std::uint32_t stone_id) {
+    Pipeline p{&program, Blend::off, {true, GL_LESS, true}, Cull::back};
+    p.stencil = {true, GL_ALWAYS, static_cast<GLint>(stone_id), GL_REPLACE};
+    return p;
 }
 
 void StoneGeometry::draw_triangles() const {
     glBindVertexArray(vertex_array_.get());
     glDrawArrays(GL_TRIANGLES, 0, vertex_count_);
-    glBindVertexArray(0);
 }
 
 }  // namespace gem::gpu

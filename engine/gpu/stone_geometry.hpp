@@ -11,6 +11,7 @@
 
 #include "geometry/stone.hpp"
 #include "gpu/gl_handles.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program.hpp"
 #include "util/result.hpp"
 
@@ -32,21 +33,24 @@ class StoneGeometry {
 
     // Once per program that reads stone.glsl: ties its block to the buffer's binding point.
     void attach(const Program& program) const;
-    // Before a draw with `program` in use: the block, and the map or the triangles on
-    // texture unit `unit` (u_exit_guess, u_triangles; u_triangle_count).
+    // Before a draw: the block alone (stone.glsl; phong's programs).
+    void bind_block() const;
+    // The block, and a non-convex stone's triangles on texture unit `unit` (shading.glsl's
+    // u_triangles, u_triangle_count), with `program` in use.
     void bind(const Program& program, int unit) const;
-    // The stone pass: front faces only, depth-tested (GL_LEQUAL, so that a depth pass of the
-    // same faces leaves them in) and written, blended over what is drawn (GL_SRC_ALPHA,
-    // GL_ONE_MINUS_SRC_ALPHA); restores blending and culling off.
-    void draw_front_faces() const;
-    // The same faces' depth alone (GL_LESS), colour writes masked off and restored, with the
-    // caller's program (stone_depth) in use.
-    void draw_depth() const;
-    // The same faces' depth (GL_LESS) with the colours the caller's program writes
-    // (stone_visibility into the visibility target; the scene's draw buffer none), and
-    // `stone_id` into the stencil where they are nearest; leaves the stencil test on.
-    void draw_visibility(std::uint32_t stone_id) const;
-    // Every triangle with the caller's state (phong's passes).
+    // A convex stone's first-guess map on texture unit `unit` (trace.frag's u_exit_guess).
+    void bind_exit_guess(const Program& program, int unit) const;
+    // The stone pass's pipelines with the caller's program, front faces only. The shading:
+    // depth-tested with GL_LEQUAL (so that a depth pass of the same faces leaves them in) and
+    // written, blended over what is drawn.
+    static Pipeline front_faces(const Program& program);
+    // The same faces' depth alone (GL_LESS), colour writes off (stone_depth).
+    static Pipeline depth_only(const Program& program);
+    // The same faces' depth (GL_LESS) with the colours the program writes (stone_visibility
+    // into the visibility target; the scene's draw buffer none), and `stone_id` into the
+    // stencil where they are nearest.
+    static Pipeline visibility(const Program& program, std::uint32_t stone_id);
+    // Every triangle, with the pipeline in place (its scope unbinds the vertex array).
     void draw_triangles() const;
 
     bool convex() const { return convex_; }
@@ -54,8 +58,6 @@ class StoneGeometry {
 
   private:
     StoneGeometry() = default;
-    // Front faces, depth-tested with `depth_test` and written; restores culling off, GL_LESS.
-    void draw_front_triangles(GLenum depth_test) const;
     VertexArray vertex_array_;
     Buffer vertices_;
     Buffer block_;

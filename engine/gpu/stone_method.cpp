@@ -1,23 +1,16 @@
 #include "gpu/stone_method.hpp"
 
+#include <cassert>
+
 namespace gem::gpu {
 
-// Each method's maker, defined in the method's own file.
-using MakeStones = Result<std::unique_ptr<StoneMethod>>(const FrameSetup& setup,
-                                                        const std::vector<const Stone*>& kinds);
-MakeStones make_trace_stones;  // trace_method.cpp
-MakeStones make_table_stones;  // table_method.cpp
-MakeStones make_phong_stones;  // phong_method.cpp
+// Each entry is defined in its method's file.
+extern const MethodEntry kTraceMethod, kTableMethod, kPhongMethod;
 
 namespace {
 
-// One line per method, the most accurate first: its name, whether it needs tables and draws
-// pieces, its maker.
-constexpr MethodEntry kMethods[] = {
-    {"trace", false, true, make_trace_stones},
-    {"table", true, false, make_table_stones},
-    {"phong", false, true, make_phong_stones},
-};
+// The registry: one entry per method, the most accurate first.
+constexpr const MethodEntry* kMethods[] = {&kTraceMethod, &kTableMethod, &kPhongMethod};
 
 }  // namespace
 
@@ -29,24 +22,48 @@ Result<bool> StoneMethod::draw_alone(std::size_t kind, const StoneFrame& frame,
     return Error{"this stone method has no models to draw a stone alone with"};
 }
 
-std::span<const MethodEntry> stone_methods() {
+std::span<const MethodEntry* const> stone_methods() {
     return kMethods;
 }
 
 const MethodEntry* find_stone_method(std::string_view name) {
-    for (const MethodEntry& entry : kMethods) {
-        if (entry.name == name) return &entry;
+    for (const MethodEntry* entry : kMethods) {
+        if (entry->name == name) return entry;
     }
     return nullptr;
 }
 
 std::string stone_method_names() {
     std::string names;
-    for (const MethodEntry& entry : kMethods) {
+    for (const MethodEntry* entry : kMethods) {
         if (!names.empty()) names += ", ";
-        names += entry.name;
+        names += entry->name;
     }
     return names;
+}
+
+const MethodEntry& fallback_stone_method() {
+    for (const MethodEntry* entry : kMethods) {
+        if (!entry->needs_database && entry->draws_pieces && entry->refracts) return *entry;
+    }
+    assert(false && "the registry has a refracting method that needs no tables");
+    return *kMethods[0];
+}
+
+const MethodEntry& tables_method() {
+    for (const MethodEntry* entry : kMethods) {
+        if (entry->needs_database) return *entry;
+    }
+    return fallback_stone_method();
+}
+
+std::vector<MethodRung> method_rungs(const RungContext& context) {
+    std::vector<MethodRung> rungs;
+    for (const MethodEntry* entry : kMethods) {
+        if (entry->rungs == nullptr) continue;
+        for (MethodRung& rung : entry->rungs(context)) rungs.push_back(std::move(rung));
+    }
+    return rungs;
 }
 
 }  // namespace gem::gpu

@@ -3,10 +3,11 @@
 // is made from the scene once (the frame setup and the kinds of stone drawn) and draws a list of
 // stone instances each frame, each in its own frame (StoneFrame: placement, camera, cube). What
 // it needs before a frame (the table decodes the views a turn will reach) it does in prepare().
-// The registry maps a name to a maker: the kiosk's config, gemrender and the kiosk's method
-// probe find methods there, so adding a method is its file plus one line in
-// stone_method.cpp (and a rung in the probe's ladder, method_probe.cpp, if the kiosk is to
-// choose it by measurement).
+// The registry (stone_method.cpp) lists each method's entry, defined in the method's own file:
+// its name and what it can draw, its maker, its GPU programs and its rungs of the kiosk's
+// method probe. The kiosk's config, gemrender, the program catalogue and the probe find
+// methods there and nowhere else, so a new method is its file, its shader and its line in the
+// registry (docs/design.md, "Methods side by side").
 
 #include <cstddef>
 #include <memory>
@@ -19,6 +20,7 @@
 #include "geometry/stone.hpp"
 #include "gpu/frame_setup.hpp"
 #include "gpu/frame_uniforms.hpp"
+#include "gpu/program.hpp"
 #include "picture/camera.hpp"
 #include "util/result.hpp"
 
@@ -74,20 +76,55 @@ class StoneMethod {
     virtual std::string describe() const { return {}; }
 };
 
+// One rung of the kiosk's method probe (render.method auto): a method at the settings it is
+// tried with.
+struct MethodRung {
+    std::string method;       // the method's registry name
+    bool blend = false;       // table: two stored views blended
+    int max_level = -1;       // table: highest ray-table level shown; -1: the level the size needs
+    std::string name;         // for the log line, e.g. "table blend"
+    bool exact_fire = false;  // trace: each colour channel traced at its own index
+};
+
+// What a method's rungs depend on: the ray-table level the picture's size needs, and whether
+// the stone's fire is drawn (its database stores dispersion, or a design's material disperses).
+struct RungContext {
+    int needed_level = 0;
+    bool dispersion = false;
+};
+
 struct MethodEntry {
     std::string_view name;
     bool needs_database = false;  // draws from ray-tables: a design or a piece cannot use it
     bool draws_pieces = false;    // draws a piece's placed stones, not only a loose one
+    // Follows the light through the stone; false: a baseline the probe chooses only when it
+    // alone holds the frame rate (phong's flat stone).
+    bool refracts = true;
+    // Draws the stone with opacity 1 − α (phong): the physical shading's α = 1 would leave
+    // only the metal on screen, so a scene draws it at the scene default.
+    bool opacity_from_alpha = false;
     // `kinds`: the kinds of stone drawn (one for a loose stone), read while making (each
     // draw's StoneFrame names its stone again).
     Result<std::unique_ptr<StoneMethod>> (*make)(const FrameSetup& setup,
                                                  const std::vector<const Stone*>& kinds) = nullptr;
+    // Its own GPU programs (program_catalog.hpp lists them with the shared ones).
+    std::vector<ProgramSpec> (*programs)() = nullptr;
+    // Its rungs of the probe's ladder, the most accurate first.
+    std::vector<MethodRung> (*rungs)(const RungContext& context) = nullptr;
 };
 
 // Every method this build has, from the most accurate to the cheapest.
-std::span<const MethodEntry> stone_methods();
+std::span<const MethodEntry* const> stone_methods();
 const MethodEntry* find_stone_method(std::string_view name);
 // "trace, table, phong": for messages about an unknown name.
 std::string stone_method_names();
+// The most accurate method that draws from ray-tables (a stone whose tables are at hand, before
+// the probe has chosen); the fallback in a build without one.
+const MethodEntry& tables_method();
+// The most accurate refracting method that needs no tables and draws pieces: what draws a
+// design or a piece where the configured method cannot.
+const MethodEntry& fallback_stone_method();
+// The probe's ladder: every method's rungs, in the registry's order.
+std::vector<MethodRung> method_rungs(const RungContext& context);
 
 }  // namespace gem::gpu

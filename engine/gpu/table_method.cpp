@@ -2,10 +2,12 @@
 
 #include <algorithm>
 #include <chrono>
+#include <string>
 #include <vector>
 
 #include "gpu/channel_wavelengths.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/program_catalog.hpp"
 #include "gpu/ring_renderer.hpp"
 #include "gpu/stone_method.hpp"
 #include "gpu/texel_array.hpp"
@@ -239,7 +241,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
         if (!other) return Error{other.error()};
     }
     const Program& p = *chosen.value();
-    p.use();
+    const PipelineScope pass(StoneGeometry::front_faces(p));
     set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, 0);
     stone_->bind(p, 1);
@@ -276,7 +278,7 @@ Result<bool> TableMethod::draw(const StoneFrame& frame, TableFrameStats* stats_o
     }
     set_piece_sight_uniforms(p, frame, kPieceSightUnit);
 
-    stone_->draw_front_faces();
+    stone_->draw_triangles();
     stats.drawn = true;
     stats.views = v1 != nullptr ? 2 : 1;
     stats.blend = v1 != nullptr ? blend : 1.0;
@@ -323,5 +325,38 @@ Result<std::unique_ptr<StoneMethod>> make_table_stones(const FrameSetup& setup,
     if (!made) return Error{made.error()};
     return std::unique_ptr<StoneMethod>(std::make_unique<TableStones>(std::move(made).value()));
 }
+
+namespace {
+
+std::vector<ProgramSpec> table_programs() {
+    constexpr std::uint32_t kFeatures = kShadingFeatures | kFireFirstOrder | kTwoViews;
+    // The thesis' shading stage from ray-tables (table_method.hpp).
+    return {
+        {"table", {"stone.vert"}, stone_method_sources("table.frag"), {}, kFeatures},
+        {"table_non_convex",
+         {"stone.vert"},
+         stone_method_sources("table.frag"),
+         {"NON_CONVEX"},
+         kFeatures},
+    };
+}
+
+// Two stored views blended at the level the picture's size needs, the nearest view alone,
+// and the nearest a level lower (only where there is one, else it would repeat the one before).
+std::vector<MethodRung> table_rungs(const RungContext& context) {
+    std::vector<MethodRung> rungs{{"table", true, -1, "table blend"},
+                                  {"table", false, -1, "table nearest"}};
+    if (context.needed_level > 0) {
+        const int lower = context.needed_level - 1;
+        rungs.push_back({"table", false, lower, "table nearest level " + std::to_string(lower)});
+    }
+    return rungs;
+}
+
+}  // namespace
+
+extern const MethodEntry kTableMethod;
+constinit const MethodEntry kTableMethod{"table",           true,           false,      true, false,
+                                         make_table_stones, table_programs, table_rungs};
 
 }  // namespace gem::gpu

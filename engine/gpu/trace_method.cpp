@@ -272,7 +272,6 @@ Result<TraceMethod> TraceMethod::make(const Stone& stone, ExitSearch search) {
     auto time_ms = [&]() -> Result<double> {
         double best = std::numeric_limits<double>::infinity();
         for (int i = 0; i < 3; ++i) {  // the first compiles the shader's last stages: not timed
-            glDepthMask(GL_TRUE);
             glClearDepthf(1.0f);
             glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
             const auto start = std::chrono::steady_clock::now();
@@ -331,10 +330,17 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
     auto chosen = program(features);
     if (!chosen) return Error{chosen.error()};
     const Program& p = *chosen.value();
-    p.use();
+    // By visibility: one rectangle about the stone, shaded where the visibility pass's stencil
+    // holds the stone (the pass decided by its depth test which stone each pixel shows, so a
+    // block with none of its pixels is never shaded), blended over what is drawn.
+    const bool by_visibility = frame.visibility.texture != 0;
+    Pipeline rectangle_pipeline{&p, Blend::alpha, {false, GL_LESS, false}};
+    rectangle_pipeline.stencil = {true, GL_EQUAL, static_cast<GLint>(frame.stone_id)};
+    const PipelineScope pass(by_visibility ? rectangle_pipeline : StoneGeometry::front_faces(p));
     set_camera_uniforms(p, frame);
     const SamplerBinding sharp = set_shading_uniforms(p, frame, kEnvironmentUnit);
     geometry_.bind(p, kStoneUnit);
+    geometry_.bind_exit_guess(p, kStoneUnit);
     set_piece_sight_uniforms(p, frame, kPieceSightUnit);
     p.set("u_facet_count", geometry_.facet_count());
     p.set("u_ior", static_cast<float>(frame.material.index()));
@@ -353,10 +359,10 @@ Result<bool> TraceMethod::draw(const StoneFrame& frame, const TraceSettings& tra
                                             : channel_indices(frame.material));
     p.set("u_channel_mix", still != nullptr ? glm::mat3(still->mix) : glm::mat3(1.0f));
 
-    if (frame.visibility.texture != 0) {
+    if (by_visibility) {
         draw_rectangle(p, frame);
     } else {
-        geometry_.draw_front_faces();
+        geometry_.draw_triangles();
     }
     return gl_check("trace pass");
 }
@@ -399,22 +405,8 @@ void TraceMethod::draw_rectangle(const Program& program, const StoneFrame& frame
         program.set("u_stone", frame.stone_id);
     }
     program.set("u_quad", *quad);
-    // Which stone each pixel shows was decided by the visibility pass's depth test: its stencil
-    // holds the stone, so a block with none of its pixels is never shaded.
-    glEnable(GL_STENCIL_TEST);
-    glStencilFunc(GL_EQUAL, static_cast<GLint>(frame.stone_id), 0xff);
-    glStencilOp(GL_KEEP, GL_KEEP, GL_KEEP);
-    glDisable(GL_DEPTH_TEST);
-    glDepthMask(GL_FALSE);
-    glDisable(GL_CULL_FACE);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
     glBindVertexArray(no_attributes_.get());
     glDrawArrays(GL_TRIANGLES, 0, 6);
-    glBindVertexArray(0);
-    glDisable(GL_BLEND);
-    glDepthMask(GL_TRUE);
-    glEnable(GL_DEPTH_TEST);
 }
 
 void TraceMethod::clear_visibility(const StoneFrame& frame) const {
@@ -429,16 +421,16 @@ void TraceMethod::clear_visibility(const StoneFrame& frame) const {
     glClearBufferuiv(GL_COLOR, 1, no_stone);
 }
 
-void TraceMethod::draw_depth(const StoneFrame& frame, const Program& depth) const {
+void TraceMethod::draw_depth(const StoneFrame& frame, const Program& depth,
+                             PipelineScope& pass) const {
     depth.set("u_view_projection", stone_view_projection(frame));
     if (frame.visibility.texture != 0) {
         // Into the visibility target alone (the scene's draw buffer is none): a colour mask
         // would mask it too.
         depth.set("u_stone", frame.stone_id);
-        geometry_.draw_visibility(frame.stone_id);
-    } else {
-        geometry_.draw_depth();
+        pass.change(StoneGeometry::visibility(depth, frame.stone_id));
     }
+    geometry_.draw_triangles();
 }
 
 namespace {
@@ -495,9 +487,11 @@ class TraceStones final : public StoneMethod {
             glScissor(scissor[0], scissor[1], scissor[2], scissor[3]);
             if (!scissored) glDisable(GL_SCISSOR_TEST);
         }
-        depth.use();
+        PipelineScope pass(!frames.empty() && frames.front().visibility.texture != 0
+                               ? StoneGeometry::visibility(depth, 0)
+                               : StoneGeometry::depth_only(depth));
         for (std::size_t i = 0; i < frames.size(); ++i) {
-            methods_[kinds[i]]->draw_depth(frames[i], depth);
+            methods_[kinds[i]]->draw_depth(frames[i], depth, pass);
         }
         auto clean = gl_check("trace depth pass");
         if (!clean) return Error{clean.error()};
@@ -553,5 +547,37 @@ Result<std::unique_ptr<StoneMethod>> make_trace_stones(const FrameSetup& setup,
     }
     return std::unique_ptr<StoneMethod>(std::move(method));
 }
+
+namespace {
+
+std::vector<ProgramSpec> trace_programs() {
+    constexpr std::uint32_t kFeatures =
+        kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility | kVisibilitySamples;
+    return {
+        // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
+        {"trace", {"stone.vert"}, stone_method_sources("trace.frag"), {}, kFeatures},
+        // A non-convex stone's fire is traced per channel in a still view only.
+        {"trace_non_convex",
+         {"stone.vert"},
+         stone_method_sources("trace.frag"),
+         {"NON_CONVEX"},
+         kFeatures & ~kFireFirstOrder},
+    };
+}
+
+// Exact fire first where the stone's fire is drawn (each channel at its own index); without
+// it the two would draw the same.
+std::vector<MethodRung> trace_rungs(const RungContext& context) {
+    std::vector<MethodRung> rungs;
+    if (context.dispersion) rungs.push_back({"trace", false, -1, "trace exact fire", true});
+    rungs.push_back({"trace", false, -1, "trace"});
+    return rungs;
+}
+
+}  // namespace
+
+extern const MethodEntry kTraceMethod;
+constinit const MethodEntry kTraceMethod{"trace",           false,          true,       true, false,
+                                         make_trace_stones, trace_programs, trace_rungs};
 
 }  // namespace gem::gpu

@@ -59,9 +59,9 @@ class TraceMethod {
     // r/t factors; the refractive index traced with is frame.material.index().
     Result<bool> draw(const StoneFrame& frame, const TraceSettings& trace,
                       TraceDispersion dispersion = TraceDispersion::none);
-    // The stone's depth alone for `frame` (StoneMethod::draw_depth), with `depth` (the
-    // stone_depth program) in use.
-    void draw_depth(const StoneFrame& frame, const Program& depth) const;
+    // The stone's depth alone for `frame` (StoneMethod::draw_depth), within the depth pass's
+    // `pass` with `depth` (stone_depth, or stone_visibility, which takes the stone's stencil).
+    void draw_depth(const StoneFrame& frame, const Program& depth, PipelineScope& pass) const;
     // A multisampled visibility target's samples within the rectangle about the stone cleared
     // to no stone, before any stone's visibility pass (the scissor test on; the caller keeps
     // and restores it): the stone's shading pass reads every sample of its rectangle's pixels,

@@ -15,6 +15,7 @@
 #include "catalogue/catalogue_store.hpp"
 #include "display/open_display.hpp"
 #include "gpu/frame_composer.hpp"
+#include "gpu/stone_method.hpp"
 #include "gpu/visibility_target.hpp"
 #include "input/touch_mapping.hpp"
 #include "picture/camera.hpp"
@@ -254,7 +255,7 @@ void KioskSession::rebuild_scene(double now_s) {
     const bool piece = stone.placed != nullptr;
     if (!scene_tables_.empty() && !piece) {
         stone.opened = scene_tables_.front();
-        render.method = "table";
+        render.method = gpu::tables_method().name;
     }
     auto made = StoneScene::make(stone, selection_->look(), render,
                                  piece ? scene_tables_ : DesignTables::KindTables{});

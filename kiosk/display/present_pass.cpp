@@ -9,6 +9,7 @@
 #include "display/rotation.hpp"
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_extensions.hpp"
+#include "gpu/pipeline.hpp"
 #include "passes/pass_programs.hpp"
 
 namespace gem::kiosk {
@@ -42,9 +43,7 @@ Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_de
     assert(picture_size_for(scanout, rotation_deg) == picture_size);
     const PictureFromScanout map = picture_from_scanout(rotation_deg, picture_size);
     glViewport(0, 0, scanout.x, scanout.y);
-    glDisable(GL_BLEND);
-    glDisable(GL_DEPTH_TEST);
-    program_.use();
+    const gpu::PipelineScope pass(gpu::Pipeline{&program_});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, picture.colour_texture());
     glBindSampler(0, bytes_sampler_.get());  // 0 (none) for the re-encoding copy

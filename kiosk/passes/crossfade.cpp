@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "passes/pass_programs.hpp"
 
 namespace gem::kiosk {
@@ -38,17 +39,13 @@ double CrossFade::opacity(double now_s) const {
 Result<bool> CrossFade::draw(const gpu::RenderTarget& picture, double now_s) const {
     if (!active(now_s)) return true;
     picture.bind();
-    glDisable(GL_DEPTH_TEST);
-    glEnable(GL_BLEND);
-    glBlendFunc(GL_SRC_ALPHA, GL_ONE_MINUS_SRC_ALPHA);
-    program_.use();
+    const gpu::PipelineScope pass(gpu::Pipeline{&program_, gpu::Blend::alpha});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, held_.colour_texture());
     program_.set("u_picture", 0);
     program_.set("u_alpha", static_cast<float>(opacity(now_s)));
     glBindVertexArray(empty_.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
-    glDisable(GL_BLEND);
     return gpu::gl_check("cross-fade");
 }
 

@@ -9,17 +9,24 @@
 
 namespace gem::kiosk {
 
+namespace {
+
+bool refracts(const MethodCandidate& c) {
+    const gpu::MethodEntry* method = gpu::find_stone_method(c.method);
+    return method != nullptr && method->refracts;
+}
+
+}  // namespace
+
 std::vector<MethodCandidate> method_ladder(int needed_level, bool dispersion) {
-    std::vector<MethodCandidate> ladder;
-    if (dispersion) ladder.push_back({"trace", false, -1, "trace exact fire", true});
-    ladder.push_back({"trace", false, -1, "trace"});
-    ladder.push_back({"table", true, -1, "table blend"});
-    ladder.push_back({"table", false, -1, "table nearest"});
-    if (needed_level > 0) {
-        ladder.push_back({"table", false, needed_level - 1,
-                          "table nearest level " + std::to_string(needed_level - 1)});
-    }
-    ladder.push_back({"phong", false, -1, "phong"});
+    return gpu::method_rungs({needed_level, dispersion});
+}
+
+std::vector<MethodCandidate> rungs_without_tables(std::vector<MethodCandidate> ladder) {
+    std::erase_if(ladder, [](const MethodCandidate& c) {
+        const gpu::MethodEntry* method = gpu::find_stone_method(c.method);
+        return method == nullptr || method->needs_database || !method->refracts;
+    });
     return ladder;
 }
 
@@ -30,9 +37,7 @@ std::optional<double> frame_time_statistic_ms(std::vector<double> frame_ms) {
 }
 
 std::size_t refractive_rungs(const std::vector<MethodCandidate>& ladder) {
-    return static_cast<std::size_t>(
-        std::count_if(ladder.begin(), ladder.end(),
-                      [](const MethodCandidate& c) { return c.method != "phong"; }));
+    return static_cast<std::size_t>(std::count_if(ladder.begin(), ladder.end(), refracts));
 }
 
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,

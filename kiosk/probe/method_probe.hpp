@@ -11,24 +11,23 @@
 #include <vector>
 
 #include "gpu/frame_renderer.hpp"
+#include "gpu/stone_method.hpp"
 
 namespace gem::kiosk {
 
-// One way to draw the stone, as the probe tries it.
-struct MethodCandidate {
-    std::string method = "table";  // a stone method by its registry name (gpu/stone_method.hpp)
-    bool blend = false;
-    int max_level = -1;       // table: highest ray-table level shown; -1: the level the size needs
-    std::string name;         // for the log line, e.g. "table blend"
-    bool exact_fire = false;  // trace: each colour channel traced at its own index
-};
+// One way to draw the stone, as the probe tries it: a rung of a method's registry entry.
+using MethodCandidate = gpu::MethodRung;
 
-// The ladder the probe walks: trace with exact fire (each channel at its own index, for a
-// database that stores dispersion), trace (exact at every view: the facet walk; fire to first
-// order), table blend at the needed level, table nearest, table nearest one level lower (only
-// when `needed_level` > 0, else it would repeat the one before), phong. Without dispersion the
-// first two rungs draw the same, and the first is left out (`dispersion` false).
+// The ladder the probe walks: each method's rungs in the registry's order (most accurate
+// first). Today: trace with exact fire (each channel at its own index, for a database that
+// stores dispersion; without it the first two rungs draw the same, and the first is left
+// out), trace (exact at every view: the facet walk; fire to first order), table blend at the
+// needed level, table nearest, table nearest one level lower (only when `needed_level` > 0),
+// phong.
 std::vector<MethodCandidate> method_ladder(int needed_level, bool dispersion = false);
+// The rungs of `ladder` whose methods can draw a stone without ray-tables and refract (a
+// design's: the trace's).
+std::vector<MethodCandidate> rungs_without_tables(std::vector<MethodCandidate> ladder);
 
 // The statistic a candidate is judged by: the 90th percentile of its frame times (nearest
 // rank, so it is one of the measured values). A median would pass a method that streams a new
@@ -60,7 +59,8 @@ struct MethodChoice {
 inline constexpr double kNearFastest = 1.25;
 MethodChoice choose_method(const std::vector<std::vector<double>>& frame_ms_per_candidate,
                            double budget_ms, std::size_t fallbacks = SIZE_MAX);
-// The candidates that may stand in when none holds the rate: every rung but phong.
+// The candidates that may stand in when none holds the rate: the rungs of the methods that
+// refract (every one but the baseline's, which come last).
 std::size_t refractive_rungs(const std::vector<MethodCandidate>& ladder);
 
 // The frame budget in ms: headroom × 1000 / rate, rate = render.frame_rate_hz when positive,

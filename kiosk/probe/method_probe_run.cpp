@@ -70,8 +70,8 @@ Result<std::unique_ptr<MethodProbe>> MethodProbe::start(
     } else {
         // A design has no tables: its rungs are the trace's, with exact fire first where its
         // material disperses (the fire a design shows, stone_scene.cpp).
-        r.candidates = method_ladder(0, first.value()->stone().material.disperses());
-        std::erase_if(r.candidates, [](const MethodCandidate& c) { return c.method != "trace"; });
+        r.candidates =
+            rungs_without_tables(method_ladder(0, first.value()->stone().material.disperses()));
     }
     r.frame_ms.resize(r.candidates.size());
     // With dispersion the ladder starts with a rung the first scene does not draw.

@@ -175,7 +175,7 @@ constexpr KeySpec<RenderConfig> kRenderKeys[] = {
      [](ConfigReader& r, const Node& n, Key k, RenderConfig& o) {
          // The registry's methods, then "auto".
          std::vector<std::string_view> names;
-         for (const gpu::MethodEntry& m : gpu::stone_methods()) names.push_back(m.name);
+         for (const gpu::MethodEntry* m : gpu::stone_methods()) names.push_back(m->name);
          names.push_back(kAutoMethod);
          std::size_t i = 0;
          if (!r.choice(n, k, names, i)) return;

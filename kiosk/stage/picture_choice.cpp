@@ -1,5 +1,9 @@
 #include "stage/picture_choice.hpp"
 
+#include <string>
+
+#include "gpu/stone_method.hpp"
+
 namespace gem::kiosk {
 
 DisplayTransform display_transform(const PictureConfig& picture, const LookChoice& look) {
@@ -25,7 +29,9 @@ gpu::PictureOptions picture_options(const PictureConfig& picture) {
 
 RenderChoice render_choice(const KioskConfig& config) {
     RenderChoice render;
-    render.method = config.render.method == kAutoMethod ? "table" : config.render.method;
+    // Until the probe has chosen, from the tables (the scene falls back where it has none).
+    render.method = config.render.method == kAutoMethod ? std::string(gpu::tables_method().name)
+                                                        : config.render.method;
     render.blend = config.render.blend;
     render.cube_face = config.render.cube_face;
     render.depth = config.render.depth;

@@ -82,7 +82,8 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(
     if (chosen == nullptr) return fail("no stone method '" + render.method + "'");
     const bool drawable = scene->piece_ ? chosen->draws_pieces
                                         : scene->database_ != nullptr || !chosen->needs_database;
-    setup.method = drawable ? render.method : "trace";
+    const gpu::MethodEntry& method = drawable ? *chosen : gpu::fallback_stone_method();
+    setup.method = method.name;
     setup.piece = scene->piece_.get();
     if (scene->piece_) setup.kind_tables = kind_tables;
     setup.database = scene->database_;
@@ -91,9 +92,9 @@ Result<std::unique_ptr<StoneScene>> StoneScene::make(
     if (stone.colour) setup.material.body_colour = *stone.colour;
     if (stone.absorption_per_mm) setup.material.absorption_per_mm = *stone.absorption_per_mm;
     setup.shading.lights = look.lights;
-    // The phong baseline draws the stone with opacity 1 − α; the physical model's α = 1 would
-    // leave only the ring on screen. 0.8 is the scene default gemrender uses (scene/scene.hpp).
-    if (setup.method == "phong") setup.shading.alpha = Scene{}.alpha;
+    // The scene default gemrender uses (scene/scene.hpp), 0.8, where the method draws the stone
+    // with opacity 1 − α (phong): the physical model's α = 1 would leave only the metal.
+    if (method.opacity_from_alpha) setup.shading.alpha = Scene{}.alpha;
     setup.trace.max_depth = render.depth;
     // Fire where the database stores it: each colour channel traced at its own index, or as
     // the tables show it, each exit's channels moved by their direction's derivative.

@@ -24,6 +24,7 @@
 
 #include "gpu/bloom_pass.hpp"
 #include "gpu/gl_handles.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 #include "gpu_test_support.hpp"
 
@@ -84,11 +85,12 @@ std::vector<float> draw_step(const char* name, int target_w, int target_h, Bind 
     const gpu::VertexArray empty = gpu::make_vertex_array();
     glViewport(0, 0, target_w, target_h);
     glDisable(GL_SCISSOR_TEST);
-    glDisable(GL_BLEND);
-    program.value().use();
-    bind(program.value());
-    glBindVertexArray(empty.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    {
+        const gpu::PipelineScope pass(gpu::Pipeline{&program.value()});
+        bind(program.value());
+        glBindVertexArray(empty.get());
+        glDrawArrays(GL_TRIANGLES, 0, 3);
+    }
     std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
     glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
     EXPECT_EQ(glGetError(), GLenum(GL_NO_ERROR));

@@ -18,6 +18,7 @@
 #include "gpu/background_pass.hpp"
 #include "gpu/environment_cube.hpp"
 #include "gpu/gl_check.hpp"
+#include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/trace_method.hpp"
@@ -77,15 +78,12 @@ bool entry_is_ambiguous(const Camera& camera, const Tracer& tracer, double ior,
 // uniformly magenta cube.
 void draw_centre_plane(const gpu::Program& plane, const gpu::EnvironmentCube& magenta,
                        const gpu::VertexArray& empty) {
-    plane.use();
+    const gpu::PipelineScope pass(gpu::Pipeline{&plane, gpu::Blend::off, {true, GL_LESS, true}});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_CUBE_MAP, magenta.texture());
     plane.set("u_environment", 0);
     plane.set("u_cam_forward",
               glm::vec3(0.0f, 0.0f, 1.0f));  // any direction: every face is magenta
-    glDisable(GL_BLEND);
-    glEnable(GL_DEPTH_TEST);
-    glDepthFunc(GL_LESS);
     glBindVertexArray(empty.get());
     glDrawArrays(GL_TRIANGLES, 0, 3);
 }

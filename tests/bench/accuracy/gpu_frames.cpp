@@ -93,7 +93,6 @@ Result<std::vector<float>> ring_coverage(const Scene& scene, const Environment& 
     const double scene_radius = std::max(radius, scene.ring->radius_mm()) * 1.01;
     auto camera = Camera::make(frame_camera(scene.stone, view, image), radius, image, image);
     if (!camera) return Error{camera.error()};
-    glDepthMask(GL_TRUE);
     glClearColor(0.0f, 0.0f, 0.0f, 0.0f);
     glClearDepthf(1.0f);
     glClear(GL_COLOR_BUFFER_BIT | GL_DEPTH_BUFFER_BIT);
