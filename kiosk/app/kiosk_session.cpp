@@ -13,10 +13,8 @@
 #include "app/catalogue_setup.hpp"
 #include "app/snapshot.hpp"
 #include "catalogue/catalogue_store.hpp"
-#include "display/open_display.hpp"
 #include "gpu/frame_composer.hpp"
 #include "gpu/stone_method.hpp"
-#include "gpu/visibility_target.hpp"
 #include "input/touch_mapping.hpp"
 #include "picture/camera.hpp"
 #include "service/log.hpp"
@@ -24,13 +22,6 @@
 #include "stage/start_view.hpp"
 
 namespace gem::kiosk {
-
-namespace {
-
-// How long a missing display waits before the kiosk tries to open it again.
-constexpr double kDisplayRetryS = 5.0;
-
-}  // namespace
 
 Result<std::unique_ptr<KioskSession>> KioskSession::make(const KioskRun& run) {
     std::unique_ptr<KioskSession> s(new KioskSession(run));
@@ -85,44 +76,24 @@ Result<bool> KioskSession::configure() {
         input_ = std::make_unique<InputManager>(config_.input);
     }
     gestures_ = std::make_unique<GestureController>(config_.gestures, kStartView);
-    try_open_display(monotonic_now_s());
+    screen_ = std::make_unique<Screen>(config_.display, config_.picture, seat_);
+    open_screen_if_due(monotonic_now_s());
     return true;
 }
 
-void KioskSession::try_open_display(double now_s) {
-    auto opened = open_display(config_.display, seat_);
-    if (!opened) {
-        // Said once at error level; the retries every few seconds stay quiet until it works.
-        if (!display_failure_logged_) {
-            log_error(opened.error() + "; trying again every " +
-                      std::to_string(static_cast<int>(kDisplayRetryS)) + " s");
-        }
-        display_failure_logged_ = true;
-        next_display_try_s_ = now_s + kDisplayRetryS;
-        notifier_.set_frames_expected(false);
-        return;
+void KioskSession::open_screen_if_due(double now_s) {
+    switch (screen_->open_if_due(now_s)) {
+        case Screen::Opening::unchanged:
+            return;
+        case Screen::Opening::failed:
+            notifier_.set_frames_expected(false);
+            return;
+        case Screen::Opening::opened:
+            break;
     }
-    display_ = std::move(opened).value();
-    log_info("display: " + display_->describe() + " on " + display_->context().description());
-    if (const std::string note = gpu::multisampled_visibility_note(gpu::max_integer_samples());
-        !note.empty()) {
-        log_info(note);
-    }
-    auto made = make_gpu_objects();
-    if (!made) {
-        log_error(made.error());
-        // GL objects go before the context that owns them.
-        crossfade_.reset();
-        picture_.reset();
-        scene_picture_.reset();
-        display_.reset();
-        next_display_try_s_ = now_s + kDisplayRetryS;
-        notifier_.set_frames_expected(false);
-        return;
-    }
-    const glm::ivec2 size = display_->picture_size();
-    auto rotation =
-        touch_rotation_from_options(config_.input.rotation_deg, display_->rotation_deg());
+    const Display& display = screen_->display();
+    const glm::ivec2 size = display.picture_size();
+    auto rotation = touch_rotation_from_options(config_.input.rotation_deg, display.rotation_deg());
     if (!rotation) log_error(rotation.error());
     const TouchMapping mapping(config_.input.calibration, rotation ? rotation.value() : 0,
                                glm::dvec2(size));
@@ -133,27 +104,14 @@ void KioskSession::try_open_display(double now_s) {
     notifier_.set_frames_expected(true);
 }
 
-Result<bool> KioskSession::make_gpu_objects() {
-    const glm::ivec2 size = display_->picture_size();
-    auto picture = gpu::RenderTarget::make(size.x, size.y);
-    if (!picture) return Error{"picture: " + picture.error()};
-    picture_.emplace(std::move(picture).value());
-    auto scene_picture = gpu::HdrPicture::make(size.x, size.y, picture_options(config_.picture));
-    if (!scene_picture) return Error{scene_picture.error()};
-    scene_picture_.emplace(std::move(scene_picture).value());
-    log_info("picture: " + scene_picture_->describe());
-    auto fade = CrossFade::make(size.x, size.y);
-    if (!fade) return Error{"cross-fade: " + fade.error()};
-    crossfade_.emplace(std::move(fade).value());
-    return true;
-}
-
 std::vector<int> KioskSession::poll_fds() const {
     std::vector<int> fds;
-    if (display_ && display_->event_fd() >= 0) fds.push_back(display_->event_fd());
+    if (screen_->open() && screen_->display().event_fd() >= 0) {
+        fds.push_back(screen_->display().event_fd());
+    }
     // The display polls the seat while it exists; without one the seat is still served, so a
     // VT switch is acknowledged even while the kiosk waits for a screen.
-    if (!display_ && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
+    if (!screen_->open() && seat_ && seat_->fd() >= 0) fds.push_back(seat_->fd());
     if (input_) fds.push_back(input_->fd());
     catalogues_->add_poll_fds(fds);
     if (design_tables_ && design_tables_->fd() >= 0) fds.push_back(design_tables_->fd());
@@ -162,13 +120,15 @@ std::vector<int> KioskSession::poll_fds() const {
 
 double KioskSession::next_deadline_s(double now_s) const {
     double next = std::numeric_limits<double>::infinity();
-    if (!display_) next = std::min(next, next_display_try_s_);
-    if (display_ && display_->timeout_ms() >= 0) {
-        next = std::min(next, now_s + display_->timeout_ms() / 1000.0);
+    if (!screen_->open()) next = std::min(next, screen_->next_try_s());
+    if (screen_->open() && screen_->display().timeout_ms() >= 0) {
+        next = std::min(next, now_s + screen_->display().timeout_ms() / 1000.0);
     }
     if (replay_) next = std::min(next, replay_->next_due_s());
     if (input_) next = std::min(next, input_->next_retry_s());
-    if (display_ && display_->ready()) next = std::min(next, next_frame_allowed_s());
+    if (screen_->open() && screen_->display().ready()) {
+        next = std::min(next, next_frame_allowed_s());
+    }
     next = std::min(next, notifier_.next_ping_s(now_s));
     // A check of a design's tables runs on a thread with no descriptor to wake the loop.
     if (design_tables_ && design_tables_->busy()) next = std::min(next, now_s + 0.1);
@@ -183,13 +143,14 @@ double KioskSession::next_frame_allowed_s() const {
 }
 
 bool KioskSession::display_ready() const {
-    return display_ && display_->ready() && monotonic_now_s() >= next_frame_allowed_s();
+    return screen_->open() && screen_->display().ready() &&
+           monotonic_now_s() >= next_frame_allowed_s();
 }
 
 void KioskSession::dispatch(double now_s) {
-    if (!display_ && now_s >= next_display_try_s_) try_open_display(now_s);
-    if (display_) display_->dispatch();
-    if (!display_ && seat_) seat_->dispatch();
+    open_screen_if_due(now_s);
+    if (screen_->open()) screen_->display().dispatch();
+    if (!screen_->open() && seat_) seat_->dispatch();
     std::vector<InputEvent> events;
     if (input_) events = input_->dispatch(now_s);
     if (replay_) events = replay_->poll(now_s);
@@ -224,8 +185,8 @@ void KioskSession::rescan_catalogues() {
 }
 
 void KioskSession::hold_picture(double now_s) {
-    if (picture_ && crossfade_ && first_frame_shown_) {
-        crossfade_->hold(*picture_, now_s, config_.crossfade_s);
+    if (screen_->open() && first_frame_shown_) {
+        screen_->crossfade().hold(screen_->picture(), now_s, config_.crossfade_s);
     }
 }
 
@@ -270,8 +231,8 @@ void KioskSession::rebuild_scene(double now_s) {
         return;
     }
     scene_ = std::move(made).value();
-    scene_picture_->set_display(display_transform(config_.picture, selection_->look()));
-    const Framing& framing = scene_->framing(display_->picture_size());
+    screen_->scene_picture().set_display(display_transform(config_.picture, selection_->look()));
+    const Framing& framing = scene_->framing(screen_->picture_size());
     char framed[160];
     std::snprintf(framed, sizeof framed,
                   "framing: the girdle spans %.0f%% of the picture's height%s",
@@ -279,7 +240,7 @@ void KioskSession::rebuild_scene(double now_s) {
                   framing.ring_cut ? "; the ring does not fit whole at that size"
                                    : ", the whole ring in view");
     log_info(framed);
-    if (auto models = scene_->choose_stone_models(display_->picture_size())) {
+    if (auto models = scene_->choose_stone_models(screen_->picture_size())) {
         for (const std::string& line : models.value()) log_info(line);
     } else {
         log_error(models.error() + "; the stones not measured keep the configured model");
@@ -297,28 +258,22 @@ void KioskSession::choose_render_method() {
         {.stone = selection_->stone(),
          .look = selection_->look(),
          .render = render_,
-         .picture = scene_picture_->options(),
-         .size = display_->picture_size(),
-         .budget_ms = frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
+         .picture = screen_->scene_picture().options(),
+         .size = screen_->picture_size(),
+         .budget_ms = frame_budget_ms(config_.render.frame_rate_hz, screen_->display().refresh_hz(),
                                       config_.render.auto_headroom)},
         first_frame_shown_, render_);
 }
 
 void KioskSession::advance_probe(double now_s) {
-    const PictureExtras extras{
-        .samples = scene_picture_->samples(),
-        .glare = scene_picture_->options().glare > 0.0 && scene_picture_->high_range()};
+    const gpu::HdrPicture& picture = screen_->scene_picture();
+    const PictureExtras extras{.samples = picture.samples(),
+                               .glare = picture.options().glare > 0.0 && picture.high_range()};
     const std::optional<AutoMethod::Choice> choice = auto_method_.step(extras);
     if (!choice) return;
     if (choice->picture) {
-        auto remade =
-            gpu::HdrPicture::make(picture_->width(), picture_->height(), *choice->picture);
-        if (remade) {
-            scene_picture_.emplace(std::move(remade).value());
-            scene_picture_->set_display(display_transform(config_.picture, selection_->look()));
-        } else {
-            log_error("picture: " + remade.error());
-        }
+        auto remade = screen_->remake_scene_picture(*choice->picture);
+        if (!remade) log_error(remade.error());
     }
     if (!choice->render) return;
     render_ = *choice->render;
@@ -333,13 +288,16 @@ bool KioskSession::same_view(const ViewState& a, const ViewState& b) {
 }
 
 gpu::FrameView KioskSession::frame_view(double now_s) {
-    gpu::FrameView view = scene_->frame_view(gestures_->view(), display_->picture_size());
+    gpu::FrameView view = scene_->frame_view(gestures_->view(), screen_->picture_size());
     view.omega = turn_.next(view_forward(view.camera), now_s);
     return view;
 }
 
 Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
-    if (!display_ || !picture_) return std::optional<FrameRecord>{};
+    if (!screen_->open()) return std::optional<FrameRecord>{};
+    gpu::HdrPicture& scene_picture = screen_->scene_picture();
+    gpu::RenderTarget& picture = screen_->picture();
+    CrossFade& crossfade = screen_->crossfade();
     gestures_->advance(now_s);
     apply_actions(now_s);
     const bool rebuilt = scene_stale_;
@@ -351,28 +309,28 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     const ViewState view = gestures_->view();
     const bool still = !rebuilt && last_view_ && same_view(*last_view_, view);
     last_view_ = view;
-    scene_picture_->begin_frame(still, now_s);
+    scene_picture.begin_frame(still, now_s);
     log_still_view_settled();
-    const bool fading = crossfade_->active(now_s);
-    const bool redraw = !scene_picture_->settled() || fading || faded_last_frame_;
+    const bool fading = crossfade.active(now_s);
+    const bool redraw = !scene_picture.settled() || fading || faded_last_frame_;
     faded_last_frame_ = fading;
 
     FrameRecord record;
     record.start_s = monotonic_now_s();
     record.probing = auto_method_.probing();
-    record.still = scene_picture_->still_frame().index;
+    record.still = scene_picture.still_frame().index;
     last_frame_start_s_ = record.start_s;
     bool stand_in = false;  // a view not yet resident was stood in for (FrameStats::stand_in)
     if (redraw) {
         // Headless frames are timed to the end of the GPU's work; on a screen the swap bounds it.
         gpu::FrameRequest request{
             .wait = config_.display.backend != "drm" ? gpu::FrameWait::frame : gpu::FrameWait::none,
-            .picture = &*scene_picture_};
+            .picture = &scene_picture};
         if (scene_) {
             request.renderer = &scene_->renderer();
             request.view = frame_view(now_s);
         }
-        auto drawn = gpu::compose_frame(request, *picture_);
+        auto drawn = gpu::compose_frame(request, picture);
         if (!drawn) return Error{drawn.error()};
         if (!drawn.value().scene_error.empty()) log_error(drawn.value().scene_error);
         if (const auto& stats = drawn.value().stats) {
@@ -380,19 +338,19 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
             record.streaming_ms = t.acquire_ms + t.upload_ms + t.wait_ms;
             stand_in = stats->stand_in;
         }
-        auto faded = crossfade_->draw(*picture_, now_s);
+        auto faded = crossfade.draw(picture, now_s);
         if (!faded) return Error{faded.error()};
         // The fade drew over the whole picture: the next frame finishes it whole.
-        if (fading) scene_picture_->forget_target();
+        if (fading) scene_picture.forget_target();
     }
     // What the picture changed since the last one: nothing when it was not drawn again; all of
     // it under a cross-fade.
     gpu::PixelRect changed;
     if (redraw) {
-        changed = fading ? gpu::PixelRect::whole(picture_->width(), picture_->height())
-                         : scene_picture_->target_region();
+        changed = fading ? gpu::PixelRect::whole(picture.width(), picture.height())
+                         : scene_picture.target_region();
     }
-    auto presented = display_->present(*picture_, changed);
+    auto presented = screen_->display().present(picture, changed);
     if (!presented) return Error{"display: " + presented.error()};
     if (!presented.value()) return std::optional<FrameRecord>{};  // drawn, but not shown
     const double done_s = monotonic_now_s();
@@ -410,7 +368,7 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     record.draw_ms = (done_s - record.start_s) * 1000.0;
     // What the next still frame is judged by; and without a mean, whether a still view needs
     // drawing again.
-    scene_picture_->frame_drawn(record.draw_ms, stand_in);
+    scene_picture.frame_drawn(record.draw_ms, stand_in);
     if (last_present_s_ >= 0.0) record.interval_ms = (done_s - last_present_s_) * 1000.0;
     if (oldest_unshown_input_s_ >= 0.0) {
         record.latency_ms = (done_s - oldest_unshown_input_s_) * 1000.0;
@@ -422,10 +380,10 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
     // The frame budget is the moving frames': a still frame traced deeper (picture.still_depth)
     // costs more by choice, and only while the view settles.
     if (scene_ && selection_->has_stone() &&
-        scene_picture_->still_frame().depth <= config_.render.depth) {
+        scene_picture.still_frame().depth <= config_.render.depth) {
         design_tables_->frame_drawn(
             selection_->stone(), scene_tables_, frames_since_scene_++, record.draw_ms,
-            frame_budget_ms(config_.render.frame_rate_hz, display_->refresh_hz(),
+            frame_budget_ms(config_.render.frame_rate_hz, screen_->display().refresh_hz(),
                             config_.render.auto_headroom));
     }
 
@@ -451,17 +409,18 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
 }
 
 void KioskSession::log_still_view_settled() {
-    if (!scene_picture_->settled()) {
+    const gpu::HdrPicture& picture = screen_->scene_picture();
+    if (!picture.settled()) {
         still_view_logged_ = false;
         return;
     }
     // Without a mean a still view is its one frame: nothing was refined to say.
-    if (still_view_logged_ || !scene_picture_->averages()) return;
+    if (still_view_logged_ || !picture.averages()) return;
     still_view_logged_ = true;
-    const gpu::StillSchedule& s = scene_picture_->still_schedule();
+    const gpu::StillSchedule& s = picture.still_schedule();
     char line[160];
     std::snprintf(line, sizeof line, "still view refined: %d frames in %.1f s, to depth %d",
-                  scene_picture_->still_frames_drawn(), s.settled_after_s(), s.deepest());
+                  picture.still_frames_drawn(), s.settled_after_s(), s.deepest());
     log_info(line);
 }
 
@@ -482,7 +441,7 @@ void KioskSession::write_requested_snapshot() {
 }
 
 void KioskSession::write_snapshot_file(const std::string& name) {
-    auto written = write_snapshot(*picture_, config_.snapshot.dir / name);
+    auto written = write_snapshot(screen_->picture(), config_.snapshot.dir / name);
     if (!written) {
         log_error(written.error());
     } else {
@@ -503,7 +462,8 @@ bool KioskSession::replay_settled(double now_s) const {
     // one whatever the machine's speed.
     // ... and render.method auto has made its choice and shows it.
     return now_s - last_input_s_ > rest_s && last_present_s_ - last_input_s_ > rest_s &&
-           scene_picture_ && scene_picture_->refined() && !auto_method_.probing() && !scene_stale_;
+           screen_->open() && screen_->scene_picture().refined() && !auto_method_.probing() &&
+           !scene_stale_;
 }
 
 void KioskSession::finish() {
@@ -514,15 +474,12 @@ void KioskSession::finish() {
         line, sizeof line, "last view: azimuth %.2f°, elevation %.2f°, roll %.2f°, zoom %.3f; %s",
         v.azimuth_deg, v.elevation_deg, v.roll_deg, v.zoom, selection_->describe().c_str());
     log_info(line);
-    if (run_.snapshot_last && picture_) write_snapshot_file("last.png");
+    if (run_.snapshot_last && screen_->open()) write_snapshot_file("last.png");
     // GL objects go while their context is current, then the display (which restores the mode
     // the screen had before the kiosk).
     auto_method_.stop();
     scene_.reset();
-    crossfade_.reset();
-    picture_.reset();
-    scene_picture_.reset();
-    display_.reset();
+    screen_->close();
     design_tables_.reset();  // a build still running is stopped
 }
 

@@ -1,8 +1,8 @@
 #pragma once
 // Everything one kiosk run holds, and what the main loop asks of it each time round: the
-// config, the display (reopened every few seconds while it is missing), the input devices or
-// a replay, the gestures, the catalogue on screen and the one arriving, the scene drawn, the
-// cross-fade, snapshots and systemd notification. kiosk_loop.cpp owns the loop itself.
+// config, the screen (app/screen.hpp), the input devices or a replay, the gestures, the
+// catalogue on screen and the one arriving, the scene drawn, snapshots and systemd
+// notification. kiosk_loop.cpp owns the loop itself.
 
 #include <memory>
 #include <optional>
@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "app/kiosk_run.hpp"
+#include "app/screen.hpp"
 #include "builds/design_tables.hpp"
 #include "catalogue/catalogue_feed.hpp"
 #include "display/display.hpp"
@@ -59,9 +60,9 @@ class KioskSession {
   private:
     explicit KioskSession(const KioskRun& run) : run_(run) {}
     Result<bool> configure();
-    void try_open_display(double now_s);
+    // The screen opened when it is missing and due: what depends on its size follows it.
+    void open_screen_if_due(double now_s);
     double next_frame_allowed_s() const;
-    Result<bool> make_gpu_objects();
     // The picture on screen held, to fade from it into what changed (none before the first).
     void hold_picture(double now_s);
     void rebuild_scene(double now_s);
@@ -83,12 +84,8 @@ class KioskSession {
     KioskConfig config_;
     double started_s_ = 0.0;
     std::shared_ptr<Seat> seat_;
-    std::unique_ptr<Display> display_;
-    double next_display_try_s_ = 0.0;
-    bool display_failure_logged_ = false;
-    std::optional<gpu::HdrPicture> scene_picture_;  // radiance, multisampled
-    std::optional<gpu::RenderTarget> picture_;      // what the display shows
-    std::optional<CrossFade> crossfade_;
+    // Before everything that holds GL objects, so that it goes after them.
+    std::unique_ptr<Screen> screen_;
 
     std::unique_ptr<InputManager> input_;
     std::optional<EvemuReplay> replay_;
