@@ -11,10 +11,10 @@
 #include <numbers>
 
 #include "app/catalogue_setup.hpp"
+#include "app/scene_build.hpp"
 #include "app/snapshot.hpp"
 #include "catalogue/catalogue_store.hpp"
 #include "gpu/frame_composer.hpp"
-#include "gpu/stone_method.hpp"
 #include "input/touch_mapping.hpp"
 #include "picture/camera.hpp"
 #include "service/log.hpp"
@@ -208,48 +208,12 @@ void KioskSession::rebuild_scene(double now_s) {
     if (!selection_->has_stone()) return;
     if (config_.render.method == kAutoMethod) choose_render_method();
     frames_since_scene_ = 0;
-    // A design whose tables are built and checked is drawn from them, as are a piece's stones
-    // whose tables are (design_tables.hpp).
-    CatalogueStone stone = selection_->stone();
-    RenderChoice render = render_;
-    scene_tables_ = design_tables_->tables_for(stone);
-    const bool piece = stone.placed != nullptr;
-    if (!scene_tables_.empty() && !piece) {
-        stone.opened = scene_tables_.front();
-        render.method = gpu::tables_method().name;
-    }
-    auto made = StoneScene::make(stone, selection_->look(), render,
-                                 piece ? scene_tables_ : DesignTables::KindTables{});
-    if (!made && !scene_tables_.empty()) {
-        // Tables that do not serve the stone (another build of it): the trace draws it.
-        log_error(made.error() + "; drawn without its tables");
-        scene_tables_.clear();
-        made = StoneScene::make(selection_->stone(), selection_->look(), render_);
-    }
-    if (!made) {
-        log_error(made.error());
-        return;
-    }
-    scene_ = std::move(made).value();
+    BuiltScene built = build_scene(selection_->stone(), selection_->look(), render_,
+                                   *design_tables_, screen_->picture_size());
+    scene_tables_ = std::move(built.tables);
+    if (!built.scene) return;
+    scene_ = std::move(built.scene);
     screen_->scene_picture().set_display(display_transform(config_.picture, selection_->look()));
-    const Framing& framing = scene_->framing(screen_->picture_size());
-    char framed[160];
-    std::snprintf(framed, sizeof framed,
-                  "framing: the girdle spans %.0f%% of the picture's height%s",
-                  100.0 * framing.stone_share,
-                  framing.ring_cut ? "; the ring does not fit whole at that size"
-                                   : ", the whole ring in view");
-    log_info(framed);
-    if (auto models = scene_->choose_stone_models(screen_->picture_size())) {
-        for (const std::string& line : models.value()) log_info(line);
-    } else {
-        log_error(models.error() + "; the stones not measured keep the configured model");
-    }
-    const std::string settled = scene_->renderer().method().describe();
-    if (!settled.empty()) log_info(scene_->renderer().method_name() + ": " + settled);
-    if (const std::string& note = scene_->renderer().sight_note(); !note.empty()) {
-        log_error(note);
-    }
     gestures_->set_elevation_limits(scene_->min_elevation_deg(), scene_->max_elevation_deg());
 }
 
