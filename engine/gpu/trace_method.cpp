@@ -553,15 +553,14 @@ namespace {
 std::vector<ProgramSpec> trace_programs() {
     constexpr std::uint32_t kFeatures =
         kShadingFeatures | kFireFirstOrder | kFireExact | kVisibility | kVisibilitySamples;
+    std::vector<std::string> sources = stone_method_sources("trace.frag");
+    sources.insert(sources.end() - 1,
+                   {"trace_common.glsl", "trace_folded.glsl", "trace_pieces.glsl"});
     return {
         // Exact tracing per fragment, exits by walking the facets (trace_method.hpp).
-        {"trace", {"stone.vert"}, stone_method_sources("trace.frag"), {}, kFeatures},
+        {"trace", {"stone.vert"}, sources, {}, kFeatures},
         // A non-convex stone's fire is traced per channel in a still view only.
-        {"trace_non_convex",
-         {"stone.vert"},
-         stone_method_sources("trace.frag"),
-         {"NON_CONVEX"},
-         kFeatures & ~kFireFirstOrder},
+        {"trace_non_convex", {"stone.vert"}, sources, {"NON_CONVEX"}, kFeatures & ~kFireFirstOrder},
     };
 }
 
