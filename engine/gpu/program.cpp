@@ -1,8 +1,8 @@
 #include "gpu/program.hpp"
 
 #include <algorithm>
+#include <cctype>
 #include <mutex>
-#include <regex>
 #include <utility>
 
 #include "gpu/shader_sources.hpp"
@@ -13,16 +13,36 @@ namespace {
 std::mutex unknown_mutex;
 std::vector<std::string> unknown_names;
 
+bool word_char(char c) {
+    return std::isalnum(static_cast<unsigned char>(c)) != 0 || c == '_';
+}
+
+// The word at `at` after any whitespace, `at` moved past it; empty where none starts there.
+std::string_view next_word(std::string_view text, std::size_t& at) {
+    while (at < text.size() && std::isspace(static_cast<unsigned char>(text[at])) != 0) ++at;
+    const std::size_t start = at;
+    while (at < text.size() && word_char(text[at])) ++at;
+    return text.substr(start, at - start);
+}
+
 // The names a chunk declares as plain uniforms ("uniform highp vec3 u_eye;", arrays too), in
-// every branch of its #ifs: a variant's defines decide which the GL keeps. A uniform block's
-// members are set through its buffer, not by name.
+// every branch of its #ifs: a variant's defines decide which the GL keeps. A uniform block
+// ("uniform StoneFacets {") has no name of its own to set: its members go through its buffer.
 void add_declared(std::string_view chunk, std::vector<std::string>& declared) {
-    static const std::regex declaration(
-        R"(\buniform\s+(?:(?:lowp|mediump|highp)\s+)?\w+\s+(\w+)\s*[\[;])");
-    const std::string text(chunk);
-    for (auto it = std::sregex_iterator(text.begin(), text.end(), declaration);
-         it != std::sregex_iterator(); ++it) {
-        declared.push_back((*it)[1].str());
+    constexpr std::string_view kUniform = "uniform";
+    for (std::size_t at = chunk.find(kUniform); at != std::string_view::npos;
+         at = chunk.find(kUniform, at)) {
+        const bool starts_word = at == 0 || !word_char(chunk[at - 1]);
+        at += kUniform.size();
+        if (!starts_word || (at < chunk.size() && word_char(chunk[at]))) continue;
+        std::string_view type = next_word(chunk, at);
+        if (type == "lowp" || type == "mediump" || type == "highp") type = next_word(chunk, at);
+        const std::string_view name = next_word(chunk, at);
+        std::size_t after = at;
+        while (after < chunk.size() && std::isspace(static_cast<unsigned char>(chunk[after])) != 0)
+            ++after;
+        if (type.empty() || name.empty() || after == chunk.size()) continue;
+        if (chunk[after] == ';' || chunk[after] == '[') declared.emplace_back(name);
     }
 }
 
