@@ -109,7 +109,13 @@ std::vector<MethodRung> phong_rungs(const RungContext&) {
 }  // namespace
 
 extern const MethodEntry kPhongMethod;
-constinit const MethodEntry kPhongMethod{"phong",           false,          true,       false, true,
-                                         make_phong_stones, phong_programs, phong_rungs};
+constinit const MethodEntry kPhongMethod{.name = "phong",
+                                         .needs_database = false,
+                                         .draws_pieces = true,
+                                         .refracts = false,
+                                         .opacity_from_alpha = true,
+                                         .make = make_phong_stones,
+                                         .programs = phong_programs,
+                                         .rungs = phong_rungs};
 
 }  // namespace gem::gpu

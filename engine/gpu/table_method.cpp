@@ -356,7 +356,13 @@ std::vector<MethodRung> table_rungs(const RungContext& context) {
 }  // namespace
 
 extern const MethodEntry kTableMethod;
-constinit const MethodEntry kTableMethod{"table",           true,           false,      true, false,
-                                         make_table_stones, table_programs, table_rungs};
+constinit const MethodEntry kTableMethod{.name = "table",
+                                         .needs_database = true,
+                                         .draws_pieces = false,
+                                         .refracts = true,
+                                         .opacity_from_alpha = false,
+                                         .make = make_table_stones,
+                                         .programs = table_programs,
+                                         .rungs = table_rungs};
 
 }  // namespace gem::gpu

@@ -576,7 +576,13 @@ std::vector<MethodRung> trace_rungs(const RungContext& context) {
 }  // namespace
 
 extern const MethodEntry kTraceMethod;
-constinit const MethodEntry kTraceMethod{"trace",           false,          true,       true, false,
-                                         make_trace_stones, trace_programs, trace_rungs};
+constinit const MethodEntry kTraceMethod{.name = "trace",
+                                         .needs_database = false,
+                                         .draws_pieces = true,
+                                         .refracts = true,
+                                         .opacity_from_alpha = false,
+                                         .make = make_trace_stones,
+                                         .programs = trace_programs,
+                                         .rungs = trace_rungs};
 
 }  // namespace gem::gpu
