@@ -7,6 +7,7 @@
 // (environment + ring, the stone itself left out) into the six faces of a virtual cube seen
 // from the stone's centre (docs/design.md, "Jewellery").
 
+#include <cstdint>
 #include <optional>
 
 #include "gpu/environment_cube.hpp"
