@@ -3,13 +3,11 @@
 #include <system_error>
 
 #include "catalogue/catalogue_signature.hpp"
+#include "catalogue/entry_models.hpp"
 #include "catalogue/manifest.hpp"
 #include "catalogue/payload_checksums.hpp"
 #include "delivery/catalogue_files.hpp"
 #include "piece/gltf_piece.hpp"
-#include "piece/metal_obj.hpp"
-#include "piece/piece_file.hpp"
-#include "scene/stone_file.hpp"
 
 namespace gem::kiosk {
 
@@ -70,47 +68,37 @@ Result<Catalogue> validate_catalogue(const std::filesystem::path& dir, const Cat
             break;
         }
         if (stop.stop_requested()) return reject("validation stopped (shutting down)");
-        if (!stone.piece.empty()) {
-            // A piece that cannot be read (a missing stone file, stones that intersect, a
-            // setting parameter out of range: piece/piece_file.hpp names the file and key)
-            // leaves its entry out, not the catalogue.
-            std::vector<std::string> recognised;  // a glTF piece says how it found its stones
-            Result<Piece> placed = load_piece(stone.piece, &recognised);
-            if (!placed) {
-                catalogue.left_out.push_back("piece '" + stone.name + "' left out: " +
-                                             relative_message(placed.error(), stone.piece, real));
-                continue;
+        std::vector<std::string> said;  // a glTF piece says how it found its stones
+        Result<bool> built = build_entry_stones(stone, &said);
+        if (!built) {
+            // A piece or design that cannot be read (a missing stone file, stones that
+            // intersect, a setting parameter out of range: piece/piece_file.hpp names the file
+            // and key) leaves its entry out, not the catalogue.
+            const std::filesystem::path& file = stone.piece.empty() ? stone.design : stone.piece;
+            catalogue.left_out.push_back(
+                (stone.piece.empty() ? "stone '" : "piece '") + stone.name +
+                "' left out: " + relative_message(built.error(), file, real));
+            continue;
+        }
+        for (const std::string& line : said) {
+            if (line.starts_with(kWarningLine)) {
+                catalogue.warnings.push_back("piece '" + stone.name +
+                                             "': " + line.substr(kWarningLine.size()));
+            } else {
+                catalogue.notes.push_back("piece '" + stone.name + "': " + line);
             }
-            for (const std::string& line : recognised) {
-                if (line.starts_with(kWarningLine)) {
-                    catalogue.warnings.push_back("piece '" + stone.name +
-                                                 "': " + line.substr(kWarningLine.size()));
-                } else {
-                    catalogue.notes.push_back("piece '" + stone.name + "': " + line);
-                }
-            }
-            stone.placed = std::make_shared<const Piece>(std::move(placed).value());
-        } else if (!stone.design.empty()) {
-            // A design that cannot be read leaves its stone out, not the catalogue.
-            Result<Stone> designed = load_stone_file(stone.design);
-            if (!designed) {
-                catalogue.left_out.push_back(
-                    "stone '" + stone.name +
-                    "' left out: " + relative_message(designed.error(), stone.design, real));
-                continue;
-            }
-            stone.designed = std::make_shared<const Stone>(std::move(designed).value());
-        } else {
+        }
+        if (stone.piece.empty() && stone.design.empty()) {
             auto opened = open_intact_database(stone.database);
             if (!opened) return reject(relative_message(opened.error(), stone.database, real));
             stone.opened = std::move(opened).value();
         }
-        if (stone.ring == RingKind::obj) {
-            Result<MetalMesh> mesh =
-                load_metal_obj(stone.ring_obj, stone.metal, RingParams{}.roughness);
-            if (!mesh) return reject(relative_message(mesh.error(), stone.ring_obj, real));
-            stone.ring_mesh = std::make_shared<const MetalMesh>(std::move(mesh).value());
-        }
+        Result<bool> ring = build_entry_ring(stone);
+        if (!ring) return reject(relative_message(ring.error(), stone.ring_obj, real));
+        // Only the entry shown first keeps what was built: the others are built again when
+        // they come near the screen (entry_models.hpp), so a catalogue of hundreds of pieces
+        // does not hold every piece's meshes.
+        if (!kept.empty()) drop_entry_models(stone);
         kept.push_back(std::move(stone));
     }
     if (kept.empty()) return reject(catalogue.left_out.front());

@@ -2,17 +2,10 @@
 
 #include <cassert>
 
+#include "catalogue/entry_models.hpp"
+#include "service/log.hpp"
+
 namespace gem::kiosk {
-
-namespace {
-
-// The same manifest entry: its name and the files it is drawn from.
-bool same_entry(const CatalogueStone& a, const CatalogueStone& b) {
-    return a.name == b.name && a.database == b.database && a.design == b.design &&
-           a.piece == b.piece && a.ring_obj == b.ring_obj;
-}
-
-}  // namespace
 
 SceneSelection::SceneSelection(std::vector<BackgroundPreset> backgrounds,
                                std::vector<LightingPreset> lightings)
@@ -25,8 +18,7 @@ SceneSelection::SceneSelection(std::vector<BackgroundPreset> backgrounds,
 
 void SceneSelection::set_catalogue(const Catalogue& catalogue) {
     stones_ = catalogue.stones;
-    stone_ = 0;
-    apply_stone_presets();
+    show(0);
 }
 
 bool SceneSelection::complete_catalogue(const Catalogue& whole) {
@@ -34,16 +26,38 @@ bool SceneSelection::complete_catalogue(const Catalogue& whole) {
                       same_entry(stones_[stone_], whole.stones[stone_]);
     stones_ = whole.stones;
     if (!kept) {
-        stone_ = 0;
-        apply_stone_presets();
+        show(0);
+    } else if (stones_.size() > 1) {
+        near_.build_ahead(stones_[(stone_ + 1) % stones_.size()]);
     }
     return kept;
 }
 
 void SceneSelection::next_stone() {
     if (stones_.empty()) return;
-    stone_ = (stone_ + 1) % stones_.size();
-    apply_stone_presets();
+    show((stone_ + 1) % stones_.size());
+}
+
+void SceneSelection::show(std::size_t index) {
+    while (!stones_.empty()) {
+        const std::size_t i = index % stones_.size();
+        Result<CatalogueStone> near = near_.bring(stones_[i]);
+        if (near) {
+            stone_ = i;
+            shown_ = std::move(near).value();
+            if (stones_.size() > 1) near_.build_ahead(stones_[(i + 1) % stones_.size()]);
+            apply_stone_presets();
+            return;
+        }
+        // Said once: the entry is gone from the cycle until the catalogue comes again.
+        log_error(near.error() +
+                  "; left out (its file changed after the catalogue was checked: "
+                  "deliver the catalogue again)");
+        stones_.erase(stones_.begin() + static_cast<std::ptrdiff_t>(i));
+        index = i;
+    }
+    stone_ = 0;
+    shown_ = {};
 }
 
 void SceneSelection::next_preset() {
@@ -53,7 +67,7 @@ void SceneSelection::next_preset() {
 
 void SceneSelection::apply_stone_presets() {
     if (stones_.empty()) return;
-    const CatalogueStone& s = stones_[stone_];
+    const CatalogueStone& s = shown_;
     for (std::size_t i = 0; i < backgrounds_.size(); ++i) {
         if (!s.background.empty() && backgrounds_[i].name == s.background) background_ = i;
     }

@@ -2,6 +2,10 @@
 // the look handed to the renderer combines the two presets as documented.
 #include <gtest/gtest.h>
 
+#include <filesystem>
+#include <fstream>
+
+#include "catalogue/validate.hpp"
 #include "stage/scene_selection.hpp"
 
 namespace gem::kiosk {
@@ -84,6 +88,51 @@ TEST(SceneSelection, AWholeCatalogueKeepsTheStoneOnScreenWhereItHoldsIt) {
     moved.stones[1].database = "elsewhere.gemdb";
     EXPECT_FALSE(s.complete_catalogue(moved));
     EXPECT_EQ(s.stone().name, "a");
+}
+
+// The stone on screen holds its models, built as it comes (the catalogue holds the first
+// entry's only). An entry whose file went away after validation is said once and left out of
+// the cycle; the others are shown in order.
+TEST(SceneSelection, TheStoneShownHoldsItsModelsAndOneWhoseFileWentIsLeftOut) {
+    namespace fs = std::filesystem;
+    const fs::path dir = fs::path(GEM_ARTIFACT_DIR) / "selection-gone";
+    fs::remove_all(dir);
+    fs::create_directories(dir);
+    const auto write = [&](const char* file, const char* text) {
+        std::ofstream(dir / file) << text;
+    };
+    write("catalogue.toml",
+          "[catalogue]\nname = \"designs\"\n"
+          "[[stone]]\nname = \"a\"\ndesign = \"a.toml\"\n"
+          "[[stone]]\nname = \"b\"\ndesign = \"b.toml\"\n"
+          "[[stone]]\nname = \"c\"\ndesign = \"c.toml\"\n");
+    for (const char* file : {"a.toml", "b.toml", "c.toml"}) {
+        write(file, "[stone]\ncut = \"round\"\n[material]\nname = \"diamond\"\n");
+    }
+    auto validated = validate_catalogue(dir);
+    ASSERT_TRUE(validated) << validated.error();
+    ASSERT_EQ(validated.value().stones.size(), 3u);
+    ASSERT_EQ(validated.value().stones[2].designed, nullptr);
+    fs::remove(dir / "b.toml");
+
+    SceneSelection s(backgrounds(), lightings());
+    s.set_catalogue(validated.value());
+    ASSERT_NE(s.stone().designed, nullptr);
+    testing::internal::CaptureStderr();
+    s.next_stone();
+    const std::string said = testing::internal::GetCapturedStderr();
+    EXPECT_EQ(s.stone().name, "c");
+    ASSERT_NE(s.stone().designed, nullptr);
+    EXPECT_NE(said.find("catalogue entry 'b': "), std::string::npos) << said;
+    EXPECT_NE(said.find("b.toml"), std::string::npos) << said;
+    EXPECT_NE(said.find("left out"), std::string::npos) << said;
+    EXPECT_EQ(s.describe().rfind("stone 'c' (2/2)", 0), 0u) << s.describe();
+    testing::internal::CaptureStderr();
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "a");
+    s.next_stone();
+    EXPECT_EQ(s.stone().name, "c");
+    EXPECT_EQ(testing::internal::GetCapturedStderr(), "") << "said once";
 }
 
 TEST(SceneSelection, PresetsAdvanceTogetherAndWrap) {

@@ -10,6 +10,7 @@
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
 
+#include "catalogue/entry_models.hpp"
 #include "catalogue/validate.hpp"
 #include "catalogue_test_support.hpp"
 #include "gemdb/reader.hpp"
@@ -71,8 +72,13 @@ TEST(CatalogueValidate, GoodCatalogueComesBackOpen) {
         EXPECT_EQ(stone.opened->path().parent_path(), fs::canonical(dir) / "stones");
     }
     EXPECT_EQ(c.stones[0].ring_mesh, nullptr) << "a parametric ring is made by the renderer";
-    ASSERT_NE(c.stones[1].ring_mesh, nullptr);
-    EXPECT_EQ(c.stones[1].ring_mesh->indices.size(), 12u);
+    // The OBJ ring was loaded to check it, and let go: the second entry is not shown first.
+    EXPECT_EQ(c.stones[1].ring_mesh, nullptr);
+    EXPECT_TRUE(lacks_models(c.stones[1]));
+    CatalogueStone near = c.stones[1];
+    ASSERT_TRUE(build_entry_models(near));
+    ASSERT_NE(near.ring_mesh, nullptr);
+    EXPECT_EQ(near.ring_mesh->indices.size(), 12u);
 }
 
 TEST(CatalogueValidate, ThroughASymlinkNamesTheRealDirectory) {
@@ -332,8 +338,16 @@ piece = "pieces/open-heart.glb"
     EXPECT_EQ(c.stones[0].name, "Halo");
     EXPECT_EQ(c.stones[1].name, "Open halo");
     EXPECT_EQ(c.stones[2].name, "Open heart");
+    // Only the entry shown first holds its piece; the others are built as they come near,
+    // from the same files, to the same pieces.
+    ASSERT_NE(c.stones[0].placed, nullptr);
+    std::vector<CatalogueStone> near = c.stones;
+    for (std::size_t i = 1; i < near.size(); ++i) {
+        EXPECT_EQ(near[i].placed, nullptr) << near[i].name;
+        ASSERT_TRUE(build_entry_models(near[i]));
+    }
     for (std::size_t i = 0; i < 2; ++i) {
-        const CatalogueStone& stone = c.stones[i];
+        const CatalogueStone& stone = near[i];
         ASSERT_NE(stone.placed, nullptr);
         EXPECT_EQ(stone.placed->stones.size(), 23u);
         ASSERT_EQ(stone.placed->kinds.size(), 2u);
@@ -342,9 +356,9 @@ piece = "pieces/open-heart.glb"
         EXPECT_TRUE(stone.placed->kinds[0].convex);
     }
     // The open heart, not convex, has its hole filled: every facet of the cut again.
-    ASSERT_NE(c.stones[2].placed, nullptr);
-    EXPECT_EQ(c.stones[2].placed->kinds[0].facets.size(), hearts.value().kinds[0].facets.size());
-    EXPECT_FALSE(c.stones[2].placed->kinds[0].convex);
+    ASSERT_NE(near[2].placed, nullptr);
+    EXPECT_EQ(near[2].placed->kinds[0].facets.size(), hearts.value().kinds[0].facets.size());
+    EXPECT_FALSE(near[2].placed->kinds[0].convex);
     const auto said = [&](const std::vector<std::string>& lines, const std::string& piece,
                           const std::string& text) {
         return std::any_of(lines.begin(), lines.end(), [&](const std::string& n) {
