@@ -36,12 +36,11 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     }
     const Program& program =
         *programs_.find(light_count_feature(frame.shading.lights) | specular_power_);
-    // 1. Forget older depth inside the stone's outline (every fragment written at the far
-    //    plane), so the front pass below keeps the nearest front facet however the buffer
-    //    started.
-    Pipeline forget{&program, Blend::off, {true, GL_ALWAYS, true, true}, Cull::back};
-    forget.colour_write = false;
-    PipelineScope pass(forget);
+    // The depth buffer holds what is drawn before the stone: the metal (frame_renderer.cpp
+    // draws it first) and the piece's stones drawn before this one. Each step tests against
+    // it, so a claw in front of the stone hides its facets.
+    // 1. Back facets, seen through the front ones: blended, depth tested, not written.
+    PipelineScope pass({&program, Blend::alpha, {true, GL_LESS, false}, Cull::front});
     program.set("u_view_projection", stone_view_projection(frame));
     const bool at_infinity = camera.orthographic();
     program.set("u_eye", at_infinity ? glm::vec3(-camera.forward())
@@ -50,10 +49,7 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
     const SamplerBinding sharp = set_surface_uniforms(program, frame, 0);
     geometry_.bind_block();
     geometry_.draw_triangles();
-    // 2. Back facets, seen through the front ones: blended, depth neither tested nor written.
-    pass.change({&program, Blend::alpha, {true, GL_ALWAYS, false}, Cull::front});
-    geometry_.draw_triangles();
-    // 3. Front facets over them, keeping their depth.
+    // 2. Front facets over them, keeping their depth.
     pass.change({&program, Blend::alpha, {true, GL_LESS, true}, Cull::back});
     geometry_.draw_triangles();
     return gl_check("phong pass");
@@ -62,7 +58,8 @@ Result<bool> PhongMethod::draw(const StoneFrame& frame) const {
 namespace {
 
 // The phong baseline as a stone method: one PhongMethod per kind of stone, drawn in order (a
-// piece's stones are not sorted: where two overlap on screen the later one shows).
+// piece's stones are not sorted: where two overlap on screen the nearer one's front facets
+// show, but a later stone's back facets are not blended under an earlier one's).
 class PhongStones final : public StoneMethod {
   public:
     std::vector<std::unique_ptr<PhongMethod>> methods;

@@ -10,6 +10,7 @@
 #include <filesystem>
 
 #include "../support/cad_corpus.hpp"
+#include "cpu/piece_tracer.hpp"
 #include "cpu/reference_render.hpp"
 #include "geometry/cuts.hpp"
 #include "gpu/frame_renderer.hpp"
@@ -20,6 +21,7 @@
 #include "piece/gltf_piece.hpp"
 #include "piece/gltf_piece_writer.hpp"
 #include "piece/piece_file.hpp"
+#include "trace/intersector.hpp"
 
 namespace gem {
 namespace {
@@ -385,6 +387,89 @@ TEST(GpuPiece, ACadRingWhoseOriginIsTheFingersCentreDrawsItsStoneBright) {
     }
     EXPECT_GT(ratio, 0.6);
     EXPECT_LT(ratio, 1.5);
+}
+
+// Phong draws the stones after the metal (frame_renderer.cpp), so a claw in front of the stone
+// must hide it. Where the CPU's own intersectors find the metal nearer than the stone along a
+// pixel's ray, the picture is the one drawn with the stone unseen (opacity 0); where the stone
+// is nearer, the stone shows. (Phong's first step once wrote the far plane over the stone's
+// outline, and the solitaire's front claws went behind the stone.)
+TEST(GpuPiece, PhongKeepsTheMetalInFrontOfTheStone) {
+    ASSERT_TRUE(gpu_test::context().ok());
+    auto solitaire =
+        load_piece(std::filesystem::path(GEM_CONFIG_DIR) / "pieces" / "solitaire.toml");
+    ASSERT_TRUE(solitaire) << solitaire.error();
+    const Piece& piece = solitaire.value();
+    constexpr int size = 128;
+    CameraSettings view = settings().camera;
+    view.elevation_deg = 15.0;
+    view.azimuth_deg = 20.0;
+    auto camera = Camera::make(view, bounding_radius(piece.stone_of(0).vertices) * 1.4, size, size);
+    ASSERT_TRUE(camera.ok()) << camera.error();
+    const Environment studio = Environment::studio();
+    const auto draw = [&](double alpha) {
+        gpu::FrameSetup setup = gpu_test::trace_setup(&piece, nullptr, studio);
+        setup.method = "phong";
+        setup.shading = settings().shading;
+        setup.shading.alpha = alpha;  // phong's opacity is 1 - alpha
+        setup.cube_face = 64;
+        auto renderer = gpu::FrameRenderer::make(std::move(setup));
+        EXPECT_TRUE(renderer.ok()) << renderer.error();
+        if (!renderer) return Image{};
+        auto target = gpu::RenderTarget::make(size, size);
+        EXPECT_TRUE(target.ok()) << target.error();
+        target.value().bind();
+        auto stats = renderer.value().render(camera.value(), gpu::FrameWait::frame);
+        EXPECT_TRUE(stats.ok()) << stats.error();
+        return target.value().read();
+    };
+    const Image shown = draw(0.2);
+    const Image unseen = draw(1.0);
+    ASSERT_EQ(shown.pixels.size(), unseen.pixels.size());
+
+    // Which is nearest along each pixel's ray: 0 nothing, 1 the stone, 2 the metal in front of it,
+    // 3 the metal alone.
+    const Stone& stone = piece.stone_of(0);
+    const Placement& at = piece.stones[0].placement;
+    const auto stone_hits = make_intersector(stone);
+    const auto metal_hits = make_bvh_intersector(metal_as_solid(piece.metal));
+    std::vector<int> nearest(shown.pixels.size(), 0);
+    for (int y = 0; y < size; ++y) {
+        for (int x = 0; x < size; ++x) {
+            const Ray ray = camera.value().ray(x + 0.5, y + 0.5);
+            SurfaceHit on_stone, on_metal;
+            const bool s = stone_hits->next_entry(
+                at.to_stone(ray.origin), at.direction_to_stone(ray.direction), kNoFacet, on_stone);
+            const bool m = metal_hits->next_entry(ray.origin, ray.direction, kNoFacet, on_metal);
+            nearest[static_cast<std::size_t>(y) * size + x] =
+                s ? (m && on_metal.t < on_stone.t ? 2 : 1) : (m ? 3 : 0);
+        }
+    }
+    // Pixels whose neighbours agree, away from the edges that rasterisation draws its own way.
+    int metal_in_front = 0, metal_differs = 0, stone_in_front = 0, stone_shows = 0;
+    for (int y = 1; y + 1 < size; ++y) {
+        for (int x = 1; x + 1 < size; ++x) {
+            const std::size_t i = static_cast<std::size_t>(y) * size + x;
+            const int k = nearest[i];
+            if (k != nearest[i - 1] || k != nearest[i + 1] || k != nearest[i - size] ||
+                k != nearest[i + size]) {
+                continue;
+            }
+            const glm::vec4 d = glm::abs(shown.pixels[i] - unseen.pixels[i]);
+            const float most = std::max({d.x, d.y, d.z});
+            if (k == 2) {
+                ++metal_in_front;
+                metal_differs += most > 1e-3f ? 1 : 0;
+            } else if (k == 1) {
+                ++stone_in_front;
+                stone_shows += most > 1e-2f ? 1 : 0;
+            }
+        }
+    }
+    ASSERT_GT(metal_in_front, 100) << "the view shows claws over the stone";
+    EXPECT_EQ(metal_differs, 0) << "of " << metal_in_front << " pixels of metal in front";
+    ASSERT_GT(stone_in_front, 1000);
+    EXPECT_GT(stone_shows, stone_in_front * 9 / 10) << "of " << stone_in_front;
 }
 
 }  // namespace
