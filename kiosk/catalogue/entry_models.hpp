@@ -2,8 +2,9 @@
 // What a catalogue entry is drawn from, built from its files: a piece's stones and metal, a
 // design's stone, an OBJ ring's mesh. Validation builds each to check it, but a catalogue holds
 // them only for the entry it shows first: a chain's catalogue of hundreds of pieces held every
-// piece's meshes (0.5 MiB an entry). The others are built again when they come near the screen
-// (near_entries.hpp). A database entry's mapping is not a model: the catalogue keeps it.
+// piece's meshes (about half a MiB an entry). The others are built again when they come near
+// the screen (near_entries.hpp). A database entry's mapping is not a model: the catalogue
+// keeps it.
 
 #include <string>
 #include <vector>

@@ -30,8 +30,8 @@ class NearEntries {
   private:
     void drop_ahead();
 
-    std::optional<CatalogueStone>
-        ahead_entry_;  // the entry being built ahead, as the catalogue names it
+    // The entry being built ahead, as the catalogue names it (without its models).
+    std::optional<CatalogueStone> ahead_entry_;
     std::future<Result<CatalogueStone>> ahead_;
 };
 
