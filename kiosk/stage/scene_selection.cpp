@@ -25,10 +25,10 @@ bool SceneSelection::complete_catalogue(const Catalogue& whole) {
     const bool kept = stone_ < stones_.size() && stone_ < whole.stones.size() &&
                       same_entry(stones_[stone_], whole.stones[stone_]);
     stones_ = whole.stones;
-    if (!kept) {
+    if (kept) {
+        build_next_ahead();
+    } else {
         show(0);
-    } else if (stones_.size() > 1) {
-        near_.build_ahead(stones_[(stone_ + 1) % stones_.size()]);
     }
     return kept;
 }
@@ -45,7 +45,7 @@ void SceneSelection::show(std::size_t index) {
         if (near) {
             stone_ = i;
             shown_ = std::move(near).value();
-            if (stones_.size() > 1) near_.build_ahead(stones_[(i + 1) % stones_.size()]);
+            build_next_ahead();
             apply_stone_presets();
             return;
         }
@@ -58,6 +58,10 @@ void SceneSelection::show(std::size_t index) {
     }
     stone_ = 0;
     shown_ = {};
+}
+
+void SceneSelection::build_next_ahead() {
+    if (stones_.size() > 1) near_.build_ahead(stones_[(stone_ + 1) % stones_.size()]);
 }
 
 void SceneSelection::next_preset() {

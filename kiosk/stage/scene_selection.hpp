@@ -46,6 +46,8 @@ class SceneSelection {
   private:
     // Shows entry `index`, or the first after it that builds.
     void show(std::size_t index);
+    // The entry after the one shown, built on a thread of its own for the next tap.
+    void build_next_ahead();
     void apply_stone_presets();
 
     std::vector<BackgroundPreset> backgrounds_;

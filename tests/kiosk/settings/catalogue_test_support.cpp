@@ -72,6 +72,17 @@ std::string read_text(const fs::path& path) {
     return std::string(std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>());
 }
 
+std::string copy_shipped_halo(const fs::path& dir) {
+    const fs::path config = fs::path(GEM_SOURCE_DIR) / "config";
+    fs::create_directories(dir / "stones");
+    for (const char* stone : {"tolkowsky-diamond.toml", "melee-diamond.toml"}) {
+        fs::copy_file(config / "stones" / stone, dir / "stones" / stone);
+    }
+    const std::string halo = read_text(config / "pieces" / "halo.toml");
+    write_text(dir / "pieces" / "halo.toml", halo);
+    return halo;
+}
+
 std::string run_command(const std::string& command, int* status) {
     std::string out;
     FILE* pipe = ::popen((command + " 2>&1").c_str(), "r");

@@ -23,6 +23,10 @@ std::vector<std::uint8_t> read_bytes(const std::filesystem::path& path);
 void write_bytes(const std::filesystem::path& path, const std::vector<std::uint8_t>& bytes);
 void write_text(const std::filesystem::path& path, const std::string& text);
 std::string read_text(const std::filesystem::path& path);
+// The shipped halo (config/pieces/halo.toml) at dir/pieces/halo.toml and the stone files it
+// names at dir/stones/, laid out as in config/ so that its "../stones/x.toml" resolve; its text,
+// for variants of it.
+std::string copy_shipped_halo(const std::filesystem::path& dir);
 // Runs a shell command; its stdout and stderr together, and its exit status in `status`.
 std::string run_command(const std::string& command, int* status = nullptr);
 

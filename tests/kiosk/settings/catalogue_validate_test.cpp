@@ -256,14 +256,7 @@ piece = "pieces/missing-stone.toml"
 name = "Wide gap"
 piece = "pieces/wide-gap.toml"
 )");
-    const fs::path config = fs::path(GEM_SOURCE_DIR) / "config";
-    fs::create_directories(dir / "stones");
-    for (const char* stone : {"tolkowsky-diamond.toml", "melee-diamond.toml"}) {
-        fs::copy_file(config / "stones" / stone, dir / "stones" / stone);
-    }
-    const std::vector<std::uint8_t> bytes = read_bytes(config / "pieces" / "halo.toml");
-    const std::string halo(bytes.begin(), bytes.end());
-    write_text(dir / "pieces" / "halo.toml", halo);
+    const std::string halo = copy_shipped_halo(dir);
     std::string missing = halo;
     missing.replace(missing.find("melee-diamond"), 13, "pebble");
     write_text(dir / "pieces" / "missing-stone.toml", missing);
