@@ -566,6 +566,7 @@ Result<Piece> parse_gltf_piece(std::string_view bytes, const std::string& name,
     std::rotate(piece.stones.begin(), hero, hero + 1);
     if (const std::string turned = turn_table_up(piece); !turned.empty()) warn(turned);
     centre_on_the_centre_stone(piece);
+    if (const std::string far = beyond_reach(piece); !far.empty()) return Error{name + ": " + far};
     if (log != nullptr && doc.images_ignored > 0) {
         log->push_back(std::to_string(doc.images_ignored) +
                        " texture image(s) ignored: a piece is shaded by its materials' factors");

@@ -1,5 +1,6 @@
 #include "piece/gltf_piece_frame.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <numbers>
@@ -102,6 +103,32 @@ void centre_on_the_centre_stone(Piece& piece) {
     for (PieceStone& s : piece.stones) s.placement.position -= centre;
     for (glm::vec3& p : piece.metal.positions) p -= glm::vec3(centre);
     piece.file_origin_mm = centre;
+}
+
+std::string beyond_reach(const Piece& piece) {
+    double farthest = 0.0;
+    bool number = true;
+    const auto reach = [&](const glm::dvec3& p) {
+        const double d = glm::length(p);
+        if (std::isnan(d)) number = false;
+        farthest = std::max(farthest, d);
+    };
+    for (const glm::vec3& p : piece.metal.positions) reach(glm::dvec3(p));
+    for (std::size_t i = 0; i < piece.stones.size(); ++i) {
+        for (const glm::dvec3& v : piece.stone_of(i).vertices) {
+            reach(piece.stones[i].placement.to_piece(v));
+        }
+    }
+    if (!number || std::isinf(farthest)) {
+        return "a corner of the piece is not a finite number of millimetres";
+    }
+    if (!(farthest > kFarthestCornerMm)) return {};
+    char text[200];
+    std::snprintf(text, sizeof text,
+                  "a corner of the piece lies %.3g mm from its centre stone (at most %.0f mm: not "
+                  "a piece of jewellery, or in units the file does not say)",
+                  farthest, kFarthestCornerMm);
+    return text;
 }
 
 }  // namespace gem

@@ -251,6 +251,45 @@ TEST(GltfCadCorpus, AVendorDiamondsColourAndItsNo) {
     EXPECT_NE(no.error().find("no stone found"), std::string::npos) << no.error();
 }
 
+// A corner far from the centre stone: a scene, or units the file does not say; and past a
+// float's range in millimetres it would poison the boxes the GPU finds surfaces by
+// (piece/sight_mesh.hpp; fuzz_gltf found a file whose corners came to infinity). Refused with
+// the reach found. The same file with its shank 50 units away loads: 50 across is read as
+// millimetres (millimetres_per_unit), and more than 400 as metres, so 1000 units are 1e6 mm.
+TEST(GltfCadCorpus, AShankFarFromItsStoneIsRefusedWithItsReach) {
+    const Stone cut = cad::round_brilliant(6.5);
+    const auto with_shank_at = [&](double metres) {
+        test_support::Glb glb;
+        const int diamond = cad::transmissive(glb, "Diamond");
+        const int gold = cad::gold(glb);
+        cad::Soup band = cad::metal_soup(cad::shank());
+        for (glm::dvec3& p : band.positions) p.x += metres;
+        const int gem = glb.mesh_of(
+            "Brilliant", json::array({cad::primitive(glb, cad::stone_soup(cut), diamond)}));
+        const int ring = glb.mesh_of("Ring", json::array({cad::primitive(glb, band, gold)}));
+        const int a = glb.child({{"name", "Diamond"}, {"mesh", gem}});
+        const int b = glb.child({{"name", "Shank"}, {"mesh", ring}});
+        glb.node({{"name", "Solitaire"}, {"children", {a, b}}});
+        const fs::path file = fs::path(GEM_ARTIFACT_DIR) / "gltf-cad" / "far-shank.glb";
+        glb.write(file);
+        return load_gltf_piece(file);
+    };
+    auto near = with_shank_at(50.0);
+    EXPECT_TRUE(near) << near.error();
+    // 1e6 mm and the shank's 10 mm, in the reader's three significant digits.
+    auto far = with_shank_at(1000.0);
+    ASSERT_FALSE(far);
+    EXPECT_NE(far.error().find("far-shank.glb: a corner of the piece lies 1e+06 mm from its "
+                               "centre stone (at most 100000 mm"),
+              std::string::npos)
+        << far.error();
+    // 1e36 m is a float in the file, and 1e39 mm is none.
+    auto past = with_shank_at(1e36);
+    ASSERT_FALSE(past);
+    EXPECT_NE(past.error().find("not a finite number of millimetres"), std::string::npos)
+        << past.error();
+}
+
 TEST(GltfStoneEvidence, SignsWeighAsDocumented) {
     import::GltfPart part;
     import::GltfMaterial m;
