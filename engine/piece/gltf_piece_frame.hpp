@@ -22,14 +22,9 @@ std::string turn_table_up(Piece& piece);
 // (Piece::file_origin_mm keeps where it was).
 void centre_on_the_centre_stone(Piece& piece);
 
-// The farthest a piece's corner may lie from its origin, in millimetres. A ring or a necklace
-// reaches a few centimetres; a file reaching further is a scene, or in units the reader did not
-// recognise, and a corner past a float's range (3.4e38) poisons the boxes the GPU finds the
-// piece's surfaces by (piece/sight_mesh.hpp; fuzz_gltf found one at 2.6e37 mm, its stones past).
-inline constexpr double kFarthestCornerMm = 1.0e5;
-
 // Why the piece, centred, cannot be shown: a corner of its metal or of a placed stone that is not
-// a number or lies further than kFarthestCornerMm from its origin; empty when none does.
+// a number or lies further than kFarthestCornerMm (piece/metal_mesh.hpp) from its origin; empty
+// when none does.
 std::string beyond_reach(const Piece& piece);
 
 }  // namespace gem

@@ -35,6 +35,14 @@ struct MetalMesh {
 // 0.0077 mm a pixel.
 inline constexpr double kChordToleranceMm = 0.0025;
 
+// The farthest a corner of a piece or a ring may lie from its origin, in millimetres, as the
+// readers of outside files take them (gltf_piece_frame.hpp, metal_obj.hpp). A ring or a
+// necklace reaches a few centimetres; a file reaching further is a scene, or in units the reader
+// did not recognise, and a corner past a float's range (3.4e38) poisons the boxes the GPU finds
+// the piece's surfaces by (piece/sight_mesh.hpp; fuzz_gltf found a glTF piece whose corners came
+// to infinity in millimetres).
+inline constexpr double kFarthestCornerMm = 1.0e5;
+
 // The fewest segments, a multiple of `multiple_of`, for a circle of `radius_mm` whose chords
 // stay within kChordToleranceMm of it (the sagitta r (1 - cos(pi / n))).
 int circle_segments(double radius_mm, int multiple_of = 1);

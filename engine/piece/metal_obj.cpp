@@ -1,6 +1,7 @@
 #include "piece/metal_obj.hpp"
 
 #include <array>
+#include <cstdio>
 #include <map>
 #include <string>
 #include <string_view>
@@ -55,6 +56,14 @@ Result<MetalMesh> parse_metal_obj(std::string_view text, const std::filesystem::
                         "'" + std::string(tokens[std::size_t(k) + 1]) + "' is not a number");
                 }
                 p[k] = *value;
+            }
+            if (key == "v" && !(glm::length(p) <= kFarthestCornerMm)) {
+                char far[160];
+                std::snprintf(far, sizeof far,
+                              "the vertex lies %.3g mm from the stone's centre (at most %.0f mm: a "
+                              "ring is drawn in the stone frame, in millimetres)",
+                              glm::length(p), kFarthestCornerMm);
+                return import::line_error(path, at, far);
             }
             (key == "v" ? v : vn).push_back(p);
         } else if (key == "f") {

@@ -262,6 +262,17 @@ TEST(RingObj, DamagedFileNamesFileAndLine) {
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("damaged_ring.obj:3:"), std::string::npos) << ring.error();
 
+    {
+        std::ofstream f(path);  // metres, or a scene: a corner 1e38 mm out
+        f << "v 0 0 0\nv 1e38 0 0\nv 0 1 0\nf 1 2 3\n";
+    }
+    ring = load_metal_obj(path, Metal::silver, 0.2);
+    ASSERT_FALSE(ring.ok());
+    EXPECT_NE(ring.error().find("damaged_ring.obj:2: the vertex lies 1e+38 mm from the stone's "
+                                "centre (at most 100000 mm"),
+              std::string::npos)
+        << ring.error();
+
     ring = load_metal_obj(dir / "no_such_ring.obj", Metal::silver, 0.2);
     ASSERT_FALSE(ring.ok());
     EXPECT_NE(ring.error().find("no_such_ring.obj"), std::string::npos) << ring.error();
