@@ -9,7 +9,6 @@
 namespace gem::gpu {
 
 namespace {
-
 constexpr int kMinSide = 8;
 
 }  // namespace
@@ -20,7 +19,6 @@ Result<BloomPass> BloomPass::make(int width, int height) {
     auto up = build_program("bloom_up");
     if (!up) return Error{up.error()};
     BloomPass b(std::move(down).value(), std::move(up).value());
-    b.empty_ = make_vertex_array();
     b.picture_sampler_ = make_sampler(GL_LINEAR);
     b.width_ = width;
     b.height_ = height;
@@ -39,6 +37,9 @@ Result<BloomPass> BloomPass::make(int width, int height) {
         h /= 2;
     }
     if (b.levels_.empty()) return Error{"glare: the picture is too small for a glare pyramid"};
+    for (std::size_t i = 0; i < b.levels_.size(); ++i) {
+        b.level_cells_[i] = TileSet(b.levels_[i].width, b.levels_[i].height, kLevelCell);
+    }
     for (std::size_t i = 0; i + 1 < b.levels_.size(); ++i) {
         Level& level = b.levels_[i];
         level.sum = make_texture_2d(GL_RGBA16F, level.width, level.height, GL_LINEAR);
@@ -84,8 +85,8 @@ PixelRect BloomPass::picture_reach(const LevelRegions& down, const PixelRect& fr
     return affected_by(level, scale, 0.0, 0.0, {width_, height_});
 }
 
-std::optional<PixelRect> BloomPass::shown_texels(const PixelRect& region, const GlareCut& cut) {
-    if (region.empty()) return PixelRect{};
+bool BloomPass::mark_shown(const PixelRect& region, const GlareCut& cut) {
+    if (region.empty()) return true;
     const std::size_t k = cut_level();
     read_back_.resize(static_cast<std::size_t>(region.area()) * 4);
     glBindFramebuffer(GL_READ_FRAMEBUFFER, k + 1 == levels_.size()
@@ -95,34 +96,61 @@ std::optional<PixelRect> BloomPass::shown_texels(const PixelRect& region, const 
     }
     glReadPixels(region.x0, region.y0, region.width(), region.height(), GL_RGBA, GL_FLOAT,
                  read_back_.data());
-    if (glGetError() != GL_NO_ERROR) return std::nullopt;
+    if (glGetError() != GL_NO_ERROR) return false;
     // The sum holds levels() - k blurs, each the background's own colour where the content
     // does not reach; the finish mixes their sum in at share / levels().
     const glm::vec3 flat = cut.background * static_cast<float>(levels_.size() - k);
     const float weight = static_cast<float>(cut.share / static_cast<double>(levels_.size()));
     const float unseen = static_cast<float>(cut.unseen);
-    PixelRect shown{region.x1, region.y1, region.x0, region.y0};
+    const LevelRegions none{};
     for (int y = 0; y < region.height(); ++y) {
         const float* row = read_back_.data() + static_cast<std::size_t>(y) * region.width() * 4;
-        for (int x = 0; x < region.width(); ++x) {
-            const glm::vec3 change =
-                glm::abs(glm::vec3(row[x * 4], row[x * 4 + 1], row[x * 4 + 2]) - flat) * weight;
-            if (std::max({change.x, change.y, change.z}) < unseen) continue;
-            shown.x0 = std::min(shown.x0, region.x0 + x);
-            shown.x1 = std::max(shown.x1, region.x0 + x + 1);
-            shown.y0 = std::min(shown.y0, region.y0 + y);
-            shown.y1 = std::max(shown.y1, region.y0 + y + 1);
+        // Each run of shown texels along the row, marked as the pixels whose glare reads it.
+        for (int x = 0; x < region.width();) {
+            const auto shown = [&](int i) {
+                const glm::vec3 change =
+                    glm::abs(glm::vec3(row[i * 4], row[i * 4 + 1], row[i * 4 + 2]) - flat) * weight;
+                return std::max({change.x, change.y, change.z}) >= unseen;
+            };
+            if (!shown(x)) {
+                ++x;
+                continue;
+            }
+            const int first = x;
+            while (x < region.width() && shown(x)) ++x;
+            shown_.mark(picture_reach(
+                none, {region.x0 + first, region.y0 + y, region.x0 + x, region.y0 + y + 1}));
         }
     }
-    return shown.empty() ? PixelRect{} : shown;
+    return true;
 }
 
-void BloomPass::draw_sum(std::size_t i, const PixelRect& region) {
+void BloomPass::draw_over(std::vector<PixelRect>& rects, std::size_t level) {
+    PixelRect about;
+    long area = 0;
+    for (const PixelRect& r : rects) {
+        about = united(about, r);
+        area += r.area();
+    }
+    if (area >= about.area()) {
+        rects.assign(1, about);
+    } else {
+        // The tiles' rectangles, each widened by the filters' reach, overlap along their
+        // shared edges: drawn as they are, those texels would be drawn twice (half as many
+        // again at the start view). Their cells of kLevelCell texels are drawn once each.
+        TileSet& cells = level_cells_[level];
+        cells.reset(levels_[level].width, levels_[level].height);
+        for (const PixelRect& r : rects) cells.mark(r);
+        cells.rects(rects);
+    }
+    rect_draw_.draw(rects, size_of(level));
+}
+
+void BloomPass::draw_sum(std::size_t i, std::vector<PixelRect>& rects) {
     const Level& smaller = levels_[i + 1];
     const Level& level = levels_[i];
     glBindFramebuffer(GL_FRAMEBUFFER, level.sum_framebuffer.get());
     glViewport(0, 0, level.width, level.height);
-    glScissor(region.x0, region.y0, region.width(), region.height());
     glActiveTexture(GL_TEXTURE1);
     glBindTexture(GL_TEXTURE_2D, level.down.get());
     glActiveTexture(GL_TEXTURE0);
@@ -131,19 +159,31 @@ void BloomPass::draw_sum(std::size_t i, const PixelRect& region) {
                                         1.0f / static_cast<float>(smaller.height)));
     up_.set("u_target_texel", glm::vec2(1.0f / static_cast<float>(level.width),
                                         1.0f / static_cast<float>(level.height)));
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    draw_over(rects, i);
 }
 
-Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& content,
-                                 const std::optional<GlareCut>& cut) {
+void BloomPass::follow_rects(const std::vector<PixelRect>& rects) {
+    for (std::size_t i = 0; i < levels_.size(); ++i) {
+        down_rects_[i].clear();
+        sum_rects_[i].clear();
+    }
+    for (const PixelRect& r : rects) {
+        LevelRegions down, sum;
+        level_regions(r, down, sum);
+        for (std::size_t i = 0; i < levels_.size(); ++i) {
+            if (!down[i].empty()) down_rects_[i].push_back(down[i]);
+            if (!sum[i].empty()) sum_rects_[i].push_back(sum[i]);
+        }
+    }
+}
+
+Result<const TileSet*> BloomPass::run(GLuint scene, const TileSet* content,
+                                      const std::optional<GlareCut>& cut) {
     // Without a content (or a last one) the region is the whole picture: every level whole.
-    const PixelRect whole = PixelRect::whole(width_, height_);
-    LevelRegions down, sum;
-    level_regions(damage_.rewrite(content, whole), down, sum);
-    const auto scissor = [](const PixelRect& r) { glScissor(r.x0, r.y0, r.width(), r.height()); };
-    glEnable(GL_SCISSOR_TEST);
+    damage_.rewrite(content, width_, height_).rects(tile_rects_);
+    follow_rects(tile_rects_);
+    glDisable(GL_SCISSOR_TEST);
     PipelineScope pass(Pipeline{&down_});
-    glBindVertexArray(empty_.get());
     glActiveTexture(GL_TEXTURE0);
     down_.set("u_source", 0);
     GLuint source = scene;
@@ -152,12 +192,11 @@ Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& c
         const Level& level = levels_[i];
         glBindFramebuffer(GL_FRAMEBUFFER, level.down_framebuffer.get());
         glViewport(0, 0, level.width, level.height);
-        scissor(down[i]);
         glBindTexture(GL_TEXTURE_2D, source);
         glBindSampler(0, i == 0 ? picture_sampler_.get() : 0);
         down_.set("u_source_texel", source_texel);
         down_.set("u_karis", i == 0 ? 1 : 0);
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        draw_over(down_rects_[i], i);
         source = level.down.get();
         source_texel = glm::vec2(1.0f / static_cast<float>(level.width),
                                  1.0f / static_cast<float>(level.height));
@@ -169,40 +208,60 @@ Result<PixelRect> BloomPass::run(GLuint scene, const std::optional<PixelRect>& c
     up_.set("u_source", 0);
     up_.set("u_own", 1);
     const std::size_t k = cut_level();
-    for (std::size_t i = levels_.size() - 1; i-- > k;) draw_sum(i, sum[i]);
+    for (std::size_t i = levels_.size() - 1; i-- > k;) draw_sum(i, sum_rects_[i]);
     auto ok = gl_check("glare pass");
     if (!ok) return Error{ok.error()};
-    if (!content) return whole;
-    LevelRegions now_down, now_sum;
-    level_regions(*content, now_down, now_sum);
-    PixelRect from = now_sum[k];
-    if (cut && !cut_unavailable_) {
-        const std::optional<PixelRect> shown = shown_texels(now_sum[k], *cut);
-        cut_unavailable_ = !shown;
-        if (shown) from = *shown;
+    if (content == nullptr) {
+        shown_.reset(width_, height_, true);
+        return &shown_;
     }
-    return united(*content, picture_reach(now_down, from));
+    // This frame's content and its glare: the finer levels' reach about each of its
+    // rectangles, and the cut level's where the display shows it (all of it without a cut).
+    shown_ = *content;
+    content->rects(tile_rects_);
+    PixelRect read;
+    bool cutting = cut && !cut_unavailable_;
+    for (const PixelRect& r : tile_rects_) {
+        LevelRegions down, sum;
+        level_regions(r, down, sum);
+        shown_.mark(picture_reach(down, cutting ? PixelRect{} : sum[k]));
+        read = united(read, sum[k]);
+    }
+    if (cutting && !mark_shown(read, *cut)) {
+        cut_unavailable_ = true;
+        for (const PixelRect& r : tile_rects_) {
+            LevelRegions down, sum;
+            level_regions(r, down, sum);
+            shown_.mark(picture_reach(down, sum[k]));
+        }
+    }
+    return &shown_;
 }
 
-Result<bool> BloomPass::spread(const PixelRect& region) {
+Result<bool> BloomPass::spread(const TileSet& region) {
     // The wider levels' sums are this frame's only where the picture's `region` reads them,
     // through the finish's bilinear tap and each step up's ±1 texels: they are drawn there and
     // nowhere else, so what they hold elsewhere (an earlier frame's glare) is never read.
     const std::size_t k = cut_level();
     if (k == 0 || region.empty()) return true;
-    LevelRegions needed;
-    needed[0] =
-        read_by(region, glm::dvec2(size_of(0)) / glm::dvec2(width_, height_), 0.0, 0.0, size_of(0));
-    for (std::size_t i = 1; i < k; ++i) {
-        needed[i] = read_by(needed[i - 1], glm::dvec2(size_of(i)) / glm::dvec2(size_of(i - 1)),
-                            -1.0, 1.0, size_of(i));
+    region.rects(tile_rects_);
+    for (std::size_t i = 0; i < k; ++i) sum_rects_[i].clear();
+    for (const PixelRect& r : tile_rects_) {
+        PixelRect needed =
+            read_by(r, glm::dvec2(size_of(0)) / glm::dvec2(width_, height_), 0.0, 0.0, size_of(0));
+        for (std::size_t i = 0; i < k && !needed.empty(); ++i) {
+            if (i > 0) {
+                needed = read_by(needed, glm::dvec2(size_of(i)) / glm::dvec2(size_of(i - 1)), -1.0,
+                                 1.0, size_of(i));
+            }
+            sum_rects_[i].push_back(needed);
+        }
     }
-    glEnable(GL_SCISSOR_TEST);
+    glDisable(GL_SCISSOR_TEST);
     const PipelineScope pass(Pipeline{&up_});
-    glBindVertexArray(empty_.get());
     up_.set("u_source", 0);
     up_.set("u_own", 1);
-    for (std::size_t i = k; i-- > 0;) draw_sum(i, needed[i]);
+    for (std::size_t i = k; i-- > 0;) draw_sum(i, sum_rects_[i]);
     return gl_check("glare: spread");
 }
 

@@ -6,15 +6,18 @@
 //
 // Each level keeps its downsample and its sum apart (the sum is the downsample plus the wider
 // level's sum, upsampled: shaders/bloom_up.frag), so that where a piece on a flat background
-// changes only part of the picture, a level's downsample is redrawn only where the piece
-// reaches it, and its sum only where the sums below reach it (SurfaceDamage, pixel_rect.hpp).
+// changes only some tiles of the picture, a level's downsample is redrawn only where those
+// tiles reach it, and its sum only where the sums below reach it (TileDamage, tile_set.hpp):
+// each of the tiles' rectangles (TileSet::rects()) is followed through the levels, and a
+// level drawn over the rectangles it reaches, in one draw (rect_draw.hpp).
 //
 // The glare of a piece on a flat background fades over its filters' reach (a tenth of the
 // picture's height each side at 1080p), far past where it still shows: at the kiosk's start
 // view, 8-bit codes stop changing a few pixels from the ring. So the sum of a level of 8-pixel
 // texels is read back, and the picture finished only where that sum, mixed in, changes the
-// picture by as much as the display shows (GlareCut); the wider levels' sums are spread only
-// where those pixels read them (spread()). Beyond, the glare moves no code by half a step.
+// picture by as much as the display shows (GlareCut), tile by tile; the wider levels' sums are
+// spread only where those tiles read them (spread()). Beyond, the glare moves no code by half a
+// step.
 
 #include <array>
 #include <optional>
@@ -23,6 +26,8 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/pixel_rect.hpp"
 #include "gpu/program.hpp"
+#include "gpu/rect_draw.hpp"
+#include "gpu/tile_set.hpp"
 #include "util/result.hpp"
 
 namespace gem::gpu {
@@ -44,18 +49,18 @@ class BloomPass {
 
     // Filters `scene` (an RGBA16F texture of the picture's size, or RGBA32F where the GL filters
     // floats: OES_texture_float_linear) into the pyramid's levels from the cut level on (the
-    // smaller ones; spread() fills the wider ones' sums). `content`: where the scene differs
-    // from one flat colour, which it was everywhere else the last time too (nullopt:
-    // anywhere); each level is then rewritten only where this content or the last run's
-    // reaches it. Gives the picture's pixels whose glare may differ from the background's own:
-    // everything the content's glare reaches, or with a cut only where the glare changes the
-    // picture by more than the display shows (GlareCut), read back from the cut level (so the
-    // GPU's queue drains there). Leaves the scissor test on.
-    Result<PixelRect> run(GLuint scene, const std::optional<PixelRect>& content = std::nullopt,
-                          const std::optional<GlareCut>& cut = std::nullopt);
+    // smaller ones; spread() fills the wider ones' sums). `content`: the tiles where the scene
+    // differs from one flat colour, which it was everywhere else the last time too (null:
+    // anywhere); each level is then rewritten only where these tiles or the last run's reach
+    // it. Gives the picture's tiles whose pixels may differ from the background's own once the
+    // glare is mixed in: the content's, and those the content's glare reaches, or with a cut
+    // only those where the glare changes the picture by more than the display shows (GlareCut),
+    // read back from the cut level (so the GPU's queue drains there).
+    Result<const TileSet*> run(GLuint scene, const TileSet* content = nullptr,
+                               const std::optional<GlareCut>& cut = std::nullopt);
     // Fills the wider levels' sums wherever the picture's pixels in `region` read them, after
     // run(): the glare texture then holds this frame's glare there, and only there.
-    Result<bool> spread(const PixelRect& region);
+    Result<bool> spread(const TileSet& region);
     // The last run's content is unknown to the next (the pyramid was filled from another
     // background): it is rewritten whole.
     void forget() { damage_.forget(); }
@@ -90,11 +95,17 @@ class BloomPass {
     // The picture's pixels whose glare reads `from` (texels of the cut level's sum) or, through
     // the wider levels, their downsamples in `down`.
     PixelRect picture_reach(const LevelRegions& down, const PixelRect& from) const;
-    // The texels of the cut level's sum in `region` whose glare the display shows, as one
-    // rectangle (empty: none); nullopt where they cannot be read.
-    std::optional<PixelRect> shown_texels(const PixelRect& region, const GlareCut& cut);
-    // Level i's sum, down + the next level's sum upsampled, over `region`.
-    void draw_sum(std::size_t i, const PixelRect& region);
+    // Marks on shown_ the tiles of the pixels whose glare reads a texel of the cut level's sum
+    // in `region` that the display shows; false where they cannot be read.
+    bool mark_shown(const PixelRect& region, const GlareCut& cut);
+    // Level i's sum, down + the next level's sum upsampled, over `rects` (draw_over()).
+    void draw_sum(std::size_t i, std::vector<PixelRect>& rects);
+    // Draws the bound pass over `rects` of `level`: each, or the rectangle about them all where
+    // that is no larger (the smaller levels, where the tiles' reaches overlap).
+    void draw_over(std::vector<PixelRect>& rects, std::size_t level);
+    // Each level's rectangles that `rects` (of the picture) reach, down and summed
+    // (level_regions()), into down_rects_ and sum_rects_.
+    void follow_rects(const std::vector<PixelRect>& rects);
     GLuint sum_texture(std::size_t level) const {
         return level + 1 == levels_.size() ? levels_[level].down.get() : levels_[level].sum.get();
     }
@@ -105,11 +116,20 @@ class BloomPass {
     // has (HdrPicture's are point-sampled: its other passes fetch texels), so that each of the
     // 13 taps averages 2×2 of its pixels. Point-sampled, the taps see one pixel of each 2×2
     // block in a checkerboard, and a sparkle's glare comes and goes as it moves by a pixel
-    // (GpuBloomEnergy).
+    // (GpuBloomEnergy). (Fetching the 36 texels the taps average instead took llvmpipe 8.3 ms
+    // against the taps' 5.7-6.6 at the start view: its filtering is vectorised.)
     Sampler picture_sampler_;
-    VertexArray empty_;
     std::vector<Level> levels_;
-    SurfaceDamage damage_;
+    TileDamage damage_;
+    RectDraw rect_draw_;
+    // Kept between frames, so that a frame allocates nothing: the tiles' rectangles, each
+    // level's rectangles this pass draws, and the tiles run() gives.
+    std::vector<PixelRect> tile_rects_;
+    std::array<std::vector<PixelRect>, kMaxLevels> down_rects_;
+    std::array<std::vector<PixelRect>, kMaxLevels> sum_rects_;
+    static constexpr int kLevelCell = 8;  // texels a side of the cells a level is drawn in
+    std::array<TileSet, kMaxLevels> level_cells_;
+    TileSet shown_;
     std::vector<float> read_back_;  // the cut level's texels, RGBA
     bool cut_unavailable_ = false;
     int width_ = 0;

@@ -34,7 +34,7 @@ Result<ComposedFrame> compose_frame(const FrameRequest& request, const RenderTar
     }
     if (picture != nullptr) {
         // Around the piece only, where the surround is one colour (hdr_picture.hpp).
-        picture->bind(camera ? request.renderer->cover(*camera) : std::nullopt);
+        picture->bind(camera ? request.renderer->cover(*camera) : nullptr);
     } else {
         target.bind();
     }

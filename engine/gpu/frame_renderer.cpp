@@ -113,17 +113,17 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         if (!tabled) return Error{"frame renderer: " + tabled.error()};
         r.method_ = std::move(tabled).value();
     }
-    // The box about everything drawn: each stone's vertices where it sits, and the metal.
-    r.box_lo_ = glm::dvec3(std::numeric_limits<double>::infinity());
-    r.box_hi_ = -r.box_lo_;
-    const auto hold = [&r](const glm::dvec3& p) {
-        r.box_lo_ = glm::min(r.box_lo_, p);
-        r.box_hi_ = glm::max(r.box_hi_, p);
-    };
+    // What the frame draws, in boxes each small on the picture (cover()): a box about each stone
+    // where it sits, and the metal's cells.
     for (std::size_t i = 0; i < r.frames_.size(); ++i) {
+        CoverBox box{glm::dvec3(std::numeric_limits<double>::infinity()),
+                     glm::dvec3(-std::numeric_limits<double>::infinity())};
         for (const glm::dvec3& v : kinds[r.kinds_[i]]->vertices) {
-            hold(r.frames_[i].placement.to_piece(v));
+            const glm::dvec3 p = r.frames_[i].placement.to_piece(v);
+            box.lo = glm::min(box.lo, p);
+            box.hi = glm::max(box.hi, p);
         }
+        r.cover_boxes_.push_back(box);
     }
     r.stone_radius_mm_ = bounding_radius(r.stone().vertices);
     r.scene_radius_mm_ = (s.piece != nullptr ? s.piece->radius_mm() : r.stone_radius_mm_) * 1.01;
@@ -152,7 +152,9 @@ Result<FrameRenderer> FrameRenderer::make(FrameSetup setup) {
         }
         r.scene_radius_mm_ = std::max(r.scene_radius_mm_, metal->radius_mm() * 1.01);
         r.ring_radius_mm_ = metal->radius_mm();
-        for (const glm::vec3& p : metal->positions) hold(glm::dvec3(p));
+        // Cells of a 48th of the metal's diameter: at the start view a tile is about one.
+        const std::vector<CoverBox> cells = metal_cover_boxes(*metal, metal->radius_mm() / 24.0);
+        r.cover_boxes_.insert(r.cover_boxes_.end(), cells.begin(), cells.end());
         // Each group of stones sees the metal from its own centre (piece/sight_groups.hpp), a
         // loose stone from its own. A loose stone's cube faces stand about as far as the ring's
         // radius, so rays leaving off-centre see it with parallax. A piece's groups look their
@@ -220,30 +222,14 @@ std::optional<glm::vec3> FrameRenderer::flat_background(const Camera& camera) co
     return std::nullopt;
 }
 
-std::optional<SceneCover> FrameRenderer::cover(const Camera& camera) const {
+const SceneCover* FrameRenderer::cover(const Camera& camera) {
     const std::optional<glm::vec3> background = flat_background(camera);
-    if (!background) return std::nullopt;
-    // The box's corners on the picture, with the centre where Camera::ray() places it (GL's
-    // rows count up), and two pixels more: a triangle's edge rasterises into the pixels it
-    // touches, and MSAA's samples sit within them.
-    const double w = camera.width(), h = camera.height();
-    const glm::dvec2 centre(0.5 * w * (1.0 + camera.shift().x),
-                            h - 0.5 * h * (1.0 - camera.shift().y));
-    glm::dvec2 lo(std::numeric_limits<double>::infinity()), hi(-lo);
-    for (int corner = 0; corner < 8; ++corner) {
-        const glm::dvec3 p((corner & 1) ? box_hi_.x : box_lo_.x,
-                           (corner & 2) ? box_hi_.y : box_lo_.y,
-                           (corner & 4) ? box_hi_.z : box_lo_.z);
-        const glm::dvec2 px =
-            centre +
-            glm::dvec2(glm::dot(p, camera.right()), glm::dot(p, camera.up())) / camera.pixel_size();
-        lo = glm::min(lo, px);
-        hi = glm::max(hi, px);
-    }
-    const PixelRect rect{
-        static_cast<int>(std::floor(lo.x)) - 2, static_cast<int>(std::floor(lo.y)) - 2,
-        static_cast<int>(std::ceil(hi.x)) + 2, static_cast<int>(std::ceil(hi.y)) + 2};
-    return SceneCover{clamped(rect, camera.width(), camera.height()), *background};
+    if (!background) return nullptr;
+    // Two pixels more each way: a triangle's edge rasterises into the pixels it touches, and
+    // MSAA's samples sit within them.
+    mark_cover(cover_boxes_, camera, 2, cover_.tiles);
+    cover_.background = *background;
+    return &cover_;
 }
 
 VisibilityAttachment FrameRenderer::attach_visibility(const Camera& camera,

@@ -75,10 +75,10 @@ class FrameRenderer {
     Result<bool> draw_kind_alone(std::size_t k, const Camera& camera, const StoneModel& model);
     // What render() draws through `camera` besides its background, when that background is
     // one colour (FrameSetup::background_colour, or what an orthographic camera sees of the
-    // environment): the rectangle around everything drawn (the corners of a box about the
-    // stones and metal) on the picture. Nullopt where the background shows the environment's
-    // changing view.
-    std::optional<SceneCover> cover(const Camera& camera) const;
+    // environment): the tiles that the boxes about each stone and the metal's cells touch
+    // (scene_cover.hpp). Null where the background shows the environment's changing view. Held
+    // by the renderer until the next call (a frame allocates nothing for it).
+    const SceneCover* cover(const Camera& camera);
     // Why a still view's metal and stones do not see their own piece (piece_path.glsl), where
     // they cannot; empty where they do, or there is no metal.
     const std::string& sight_note() const { return sight_note_; }
@@ -124,8 +124,9 @@ class FrameRenderer {
     std::unique_ptr<VisibilityTarget> visibility_;  // StoneFrame::visibility
     double scene_radius_mm_ = 0.0;
     double stone_radius_mm_ = 0.0;
-    double ring_radius_mm_ = 0.0;           // the metal's, about the centre
-    glm::dvec3 box_lo_{0.0}, box_hi_{0.0};  // about every stone and the metal (cover())
+    double ring_radius_mm_ = 0.0;        // the metal's, about the centre
+    std::vector<CoverBox> cover_boxes_;  // about each stone and the metal's cells (cover())
+    SceneCover cover_;                   // cover()'s last
 };
 
 }  // namespace gem::gpu

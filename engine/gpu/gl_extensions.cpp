@@ -14,4 +14,11 @@ bool gl_has_extension(std::string_view name) {
     return false;
 }
 
+bool gl_version_at_least(int major, int minor) {
+    GLint has_major = 0, has_minor = 0;
+    glGetIntegerv(GL_MAJOR_VERSION, &has_major);
+    glGetIntegerv(GL_MINOR_VERSION, &has_minor);
+    return has_major > major || (has_major == major && has_minor >= minor);
+}
+
 }  // namespace gem::gpu

@@ -5,6 +5,8 @@
 #include <cmath>
 #include <cstdio>
 
+#include <GLES3/gl31.h>
+
 #include "gpu/gl_check.hpp"
 #include "gpu/gl_extensions.hpp"
 #include "gpu/pipeline.hpp"
@@ -68,21 +70,48 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
     const int samples =
         std::min({options.samples, max_samples(colour_format), max_samples(GL_DEPTH24_STENCIL8)});
     if (samples > 1) {
-        p.multisampled_colour_ = make_renderbuffer();
-        glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_colour_.get());
-        glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colour_format, width, height);
         p.multisampled_depth_ = make_depth_renderbuffer(width, height, samples);
         p.multisampled_ = make_framebuffer();
         glBindFramebuffer(GL_FRAMEBUFFER, p.multisampled_.get());
-        glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
-                                  p.multisampled_colour_.get());
         glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_DEPTH_STENCIL_ATTACHMENT, GL_RENDERBUFFER,
                                   p.multisampled_depth_.get());
+        // Where the GL has multisampled textures (ES 3.1), the scene's samples are one and a
+        // shader resolves them over the tiles a frame rewrites; else a renderbuffer, resolved by
+        // one blit about those tiles.
+        if (p.high_range_ && gl_version_at_least(3, 1)) {
+            auto resolve = build_program("resolve", {}, "310 es");
+            if (resolve) {
+                p.multisampled_samples_ = make_texture();
+                glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, p.multisampled_samples_.get());
+                // Fixed sample locations: the depth attachment is a renderbuffer.
+                glTexStorage2DMultisample(GL_TEXTURE_2D_MULTISAMPLE, samples, colour_format, width,
+                                          height, GL_TRUE);
+                glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+                glFramebufferTexture2D(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0,
+                                       GL_TEXTURE_2D_MULTISAMPLE, p.multisampled_samples_.get(), 0);
+                if (glGetError() == GL_NO_ERROR && complete()) {
+                    p.resolve_.emplace(std::move(resolve).value());
+                } else {
+                    p.multisampled_samples_.reset();
+                }
+            }
+        }
+        if (!p.resolve_) {
+            p.multisampled_colour_ = make_renderbuffer();
+            glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_colour_.get());
+            glRenderbufferStorageMultisample(GL_RENDERBUFFER, samples, colour_format, width,
+                                             height);
+            glFramebufferRenderbuffer(GL_FRAMEBUFFER, GL_COLOR_ATTACHMENT0, GL_RENDERBUFFER,
+                                      p.multisampled_colour_.get());
+        }
         if (glGetError() == GL_NO_ERROR && complete()) {
+            // A complete framebuffer's attachments have one sample count: the depth's.
+            glBindRenderbuffer(GL_RENDERBUFFER, p.multisampled_depth_.get());
             glGetRenderbufferParameteriv(GL_RENDERBUFFER, GL_RENDERBUFFER_SAMPLES, &p.samples_);
             p.samples_ = std::max(p.samples_, 1);
         } else {
             p.multisampled_.reset();
+            p.resolve_.reset();
         }
     }
 
@@ -119,7 +148,6 @@ Result<HdrPicture> HdrPicture::make(int width, int height, const PictureOptions&
         if (!glare) return Error{glare.error()};
         p.glare_.emplace(std::move(glare).value());
     }
-    p.empty_ = make_vertex_array();
     auto ok = gl_check("picture: allocate");
     if (!ok) return Error{ok.error()};
     return p;
@@ -147,7 +175,7 @@ void HdrPicture::frame_drawn(double ms, bool stand_in) {
 std::optional<PixelRect> HdrPicture::band() const {
     if (!accumulating() || bands_.bands() <= 1) return std::nullopt;
     // Rows of what the scene covers (all of it without a cover).
-    return bands_.rows(cover_ ? cover_->rect : PixelRect::whole(width_, height_), band_);
+    return bands_.rows(cover_ ? cover_->tiles.bounds() : PixelRect::whole(width_, height_), band_);
 }
 
 bool HdrPicture::accumulating() const {
@@ -197,24 +225,29 @@ void scissor(const PixelRect& r) {
     glScissor(r.x0, r.y0, r.width(), r.height());
 }
 
-std::optional<PixelRect> content_of(const std::optional<SceneCover>& cover) {
-    if (!cover) return std::nullopt;
-    return cover->rect;
-}
-
 }  // namespace
 
-void HdrPicture::bind(const std::optional<SceneCover>& cover) {
-    if (!cover || !cover_ || cover_->background != cover->background) forget_all();
-    cover_ = cover;
+const TileSet* HdrPicture::content() const {
+    return cover_ ? &cover_->tiles : nullptr;
+}
+
+void HdrPicture::bind(const SceneCover* cover) {
+    // A cover of another picture's size says nothing of this one's.
+    if (cover != nullptr && (cover->tiles.width() != width_ || cover->tiles.height() != height_)) {
+        cover = nullptr;
+    }
+    if (cover == nullptr || !cover_ || cover_->background != cover->background) forget_all();
+    if (cover != nullptr) {
+        cover_ = *cover;
+    } else {
+        cover_.reset();
+    }
     // The scene is drawn whole, cleared first: a clear of the whole framebuffer is the cheap
     // one (a tiled GPU need not load its tiles; llvmpipe clears tiles without rasterising:
     // bench_picture measured a scissored clear of the 4× MSAA picture at 1080p 7 ms dearer),
     // and the scene's own draws cover only their pixels. A still frame after the first draws
     // straight into the resolved picture, whose content is then this frame's.
-    if (!multisampled_frame()) {
-        resolved_damage_.rewrite(content_of(cover), PixelRect::whole(width_, height_));
-    }
+    if (!multisampled_frame()) resolved_damage_.rewrite(content(), width_, height_);
     glBindFramebuffer(GL_FRAMEBUFFER,
                       multisampled_frame() ? multisampled_.get() : resolved_framebuffer_.get());
     glViewport(0, 0, width_, height_);
@@ -237,16 +270,32 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     };
     if (times != nullptr) glFinish();
     t0 = std::chrono::steady_clock::now();
-    const PixelRect whole = PixelRect::whole(width_, height_);
-    const std::optional<PixelRect> content = content_of(cover_);
-    glEnable(GL_SCISSOR_TEST);  // the blit too is scissored
+    const glm::ivec2 size(width_, height_);
+    glDisable(GL_SCISSOR_TEST);
     if (multisampled_frame()) {
-        const PixelRect r = resolved_damage_.rewrite(content, whole);
-        scissor(r);
-        glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.get());
-        glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.get());
-        glBlitFramebuffer(r.x0, r.y0, r.x1, r.y1, r.x0, r.y0, r.x1, r.y1, GL_COLOR_BUFFER_BIT,
-                          GL_NEAREST);
+        const TileSet& rewritten = resolved_damage_.rewrite(content(), width_, height_);
+        if (resolve_) {
+            glBindFramebuffer(GL_FRAMEBUFFER, resolved_framebuffer_.get());
+            glViewport(0, 0, width_, height_);
+            const PipelineScope pass(Pipeline{&*resolve_});
+            glActiveTexture(GL_TEXTURE0);
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, multisampled_samples_.get());
+            resolve_->set("u_samples", 0);
+            resolve_->set("u_sample_count", samples_);
+            rewritten.rects(rects_);
+            rect_draw_.draw(rects_, size);
+            glBindTexture(GL_TEXTURE_2D_MULTISAMPLE, 0);
+        } else {
+            // One blit about the tiles: a blit each costs llvmpipe ~0.1 ms (bench_pass_floor).
+            const PixelRect r = rewritten.bounds();
+            glEnable(GL_SCISSOR_TEST);  // the blit is scissored
+            scissor(r);
+            glBindFramebuffer(GL_READ_FRAMEBUFFER, multisampled_.get());
+            glBindFramebuffer(GL_DRAW_FRAMEBUFFER, resolved_framebuffer_.get());
+            glBlitFramebuffer(r.x0, r.y0, r.x1, r.y1, r.x0, r.y0, r.x1, r.y1, GL_COLOR_BUFFER_BIT,
+                              GL_NEAREST);
+            glDisable(GL_SCISSOR_TEST);
+        }
     }
     GLuint scene = resolved_.get();
     if (accumulating()) {
@@ -254,62 +303,51 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
         if (!mean_framebuffer_) {
             mean_ = make_texture_2d(mean_format(), width_, height_, GL_NEAREST);
             mean_framebuffer_ = make_framebuffer_with(mean_.get());
-            if (!complete()) {
-                glDisable(GL_SCISSOR_TEST);
-                return Error{"picture: the still view's mean cannot be rendered"};
-            }
+            if (!complete()) return Error{"picture: the still view's mean cannot be rendered"};
             mean_damage_.forget();
         }
         glBindFramebuffer(GL_FRAMEBUFFER, mean_framebuffer_.get());
         glViewport(0, 0, width_, height_);
-        // A band adds its rows only: each row has then had each frame of the view once.
-        const PixelRect rewritten = mean_damage_.rewrite(content, whole);
-        const std::optional<PixelRect> rows = band();
-        scissor(rows ? intersected(rewritten, *rows) : rewritten);
+        // A band adds its rows only: each row has then had each frame of the view once. The
+        // tiles' rectangles are disjoint: each pixel is blended once.
+        mean_damage_.rewrite(content(), width_, height_).rects(rects_);
+        if (const std::optional<PixelRect> rows = band()) {
+            for (PixelRect& r : rects_) r = intersected(r, *rows);
+        }
         const PipelineScope pass(Pipeline{&*accumulate_, Blend::constant_alpha});
         glBlendColor(0.0f, 0.0f, 0.0f, 1.0f / static_cast<float>(schedule_.index() + 1));
         glActiveTexture(GL_TEXTURE0);
         glBindTexture(GL_TEXTURE_2D, resolved_.get());
         accumulate_->set("u_scene", 0);
-        glBindVertexArray(empty_.get());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        rect_draw_.draw(rects_, size);
     }
     if (schedule_.index() >= 0) scene = mean_.get();
     lap(times ? &times->resolve_ms : nullptr);
     // A band before its frame's last: the picture shown changes once the frame is whole, so
     // its glare and tone curve wait for that (they would cost every band what a frame costs).
     if (band() && band_ + 1 < bands_.bands()) {
-        glDisable(GL_SCISSOR_TEST);
-        target_region_ = PixelRect{};
+        target_region_.reset(width_, height_);
         return true;
     }
     const bool glare = glare_ && options_.glare > 0.0;
-    // What the finish rewrites: around the piece, its glare's reach (cut where the display
-    // shows none of it) included, and what it rewrote the last time.
-    PixelRect shown = content ? *content : whole;
+    // What the finish rewrites: the piece's tiles and those its glare reaches (cut where the
+    // display shows none of it), and what it rewrote the last time.
+    const TileSet* shown = content();
     if (glare) {
-        auto ran = glare_->run(scene, content, glare_cut());
-        if (!ran) {
-            glDisable(GL_SCISSOR_TEST);
-            return Error{ran.error()};
-        }
-        shown = ran.value();
+        auto ran = glare_->run(scene, content(), glare_cut());
+        if (!ran) return Error{ran.error()};
+        if (shown != nullptr) shown = ran.value();
     }
     if (picture.framebuffer() != last_target_) target_damage_.forget();
     last_target_ = picture.framebuffer();
-    target_region_ =
-        target_damage_.rewrite(content ? std::optional<PixelRect>(shown) : std::nullopt, whole);
+    target_region_ = target_damage_.rewrite(shown, width_, height_);
     if (glare) {
         auto spread = glare_->spread(target_region_);
-        if (!spread) {
-            glDisable(GL_SCISSOR_TEST);
-            return spread;
-        }
+        if (!spread) return spread;
     }
     lap(times ? &times->glare_ms : nullptr);
 
     picture.bind();
-    scissor(target_region_);
     const PipelineScope pass(Pipeline{&finish_});
     glActiveTexture(GL_TEXTURE0);
     glBindTexture(GL_TEXTURE_2D, scene);
@@ -321,10 +359,9 @@ Result<bool> HdrPicture::finish(const RenderTarget& picture, FinishTimes* times)
     finish_.set("u_glare_levels", glare ? static_cast<float>(glare_->levels()) : 1.0f);
     finish_.set("u_exposure", static_cast<float>(std::exp2(options_.display.exposure_ev)));
     finish_.set("u_tone_curve", options_.display.curve == ToneCurve::clip ? 0 : 1);
-    glBindVertexArray(empty_.get());
-    glDrawArrays(GL_TRIANGLES, 0, 3);
+    target_region_.rects(rects_);
+    rect_draw_.draw(rects_, size);
     glActiveTexture(GL_TEXTURE0);
-    glDisable(GL_SCISSOR_TEST);
     lap(times ? &times->tone_ms : nullptr);
     return gl_check("picture: finish");
 }

@@ -28,10 +28,11 @@
 // the picture shown is finished once the frame is whole.
 //
 // Where the scene is a piece on one flat colour (a SceneCover given to bind()), every pass after
-// the scene runs only where the picture changes: around what the piece covers in this frame and
-// what it covered the last time each surface was drawn (pixel_rect.hpp, SurfaceDamage), the glare's
-// reach included. Outside, each surface still holds the background as a whole frame left it;
-// a new background colour, a new display transform or another target rewrites them whole.
+// the scene runs only where the picture changes: over the tiles the piece covers in this frame
+// and those it covered the last time each surface was drawn (tile_set.hpp, TileDamage), and
+// those its glare reaches where the display shows it. Outside, each surface still holds the
+// background as a whole frame left it; a new background colour, a new display transform or
+// another target rewrites them whole.
 
 #include <optional>
 
@@ -43,6 +44,7 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/pixel_rect.hpp"
 #include "gpu/program.hpp"
+#include "gpu/rect_draw.hpp"
 #include "gpu/render_target.hpp"
 #include "gpu/scene_cover.hpp"
 #include "gpu/still_bands.hpp"
@@ -113,14 +115,14 @@ class HdrPicture {
     // The picture is as good as this view gets: settled, or no averaging at all.
     bool refined() const { return !averages() || settled(); }
     // Binds the scene framebuffer as the draw framebuffer, viewport = the whole picture, for
-    // a frame whose scene covers `cover` (FrameRenderer::cover(); nullopt: anything). The
-    // scene is drawn whole (its clear is cheapest so); finish() runs around the cover.
-    void bind(const std::optional<SceneCover>& cover = std::nullopt);
+    // a frame whose scene covers `cover` (FrameRenderer::cover(); null: anything). The scene
+    // is drawn whole (its clear is cheapest so); finish() runs over the cover's tiles.
+    void bind(const SceneCover* cover = nullptr);
     // The scene into `picture` (the same size), rewriting only where it changes (bind()'s
     // cover); the scissor test is off after it. `times`: measure each pass (stalls the GPU).
     Result<bool> finish(const RenderTarget& picture, FinishTimes* times = nullptr);
-    // The target's pixels the last finish() wrote: what a display must show anew.
-    const PixelRect& target_region() const { return target_region_; }
+    // The target's tiles the last finish() wrote: what a display must show anew.
+    const TileSet& target_region() const { return target_region_; }
     // The target was drawn over outside finish() (a cross-fade): the next one rewrites it whole.
     void forget_target() { target_damage_.forget(); }
 
@@ -156,14 +158,19 @@ class HdrPicture {
     void forget_all();
     // Where this frame's glare may be cut (nullopt: no flat background, or no cut asked for).
     std::optional<GlareCut> glare_cut();
+    // The tiles the scene covers (null: anywhere).
+    const TileSet* content() const;
 
     PictureOptions options_;
     int width_ = 0;
     int height_ = 0;
     int samples_ = 1;
     bool high_range_ = true;
-    // Multisampled: the scene renderbuffers, resolved into resolved_; else drawn there.
+    // Multisampled: the scene's samples, resolved into resolved_; else drawn there. Its colour
+    // is a multisampled texture resolved by resolve_ where the GL has them, else a renderbuffer.
     Framebuffer multisampled_;
+    Texture multisampled_samples_;
+    std::optional<Program> resolve_;
     Renderbuffer multisampled_colour_;
     Renderbuffer multisampled_depth_;
     Framebuffer resolved_framebuffer_;
@@ -186,15 +193,16 @@ class HdrPicture {
     std::optional<Program> accumulate_;
     std::optional<BloomPass> glare_;
     Program finish_;
-    VertexArray empty_;
+    RectDraw rect_draw_;
+    std::vector<PixelRect> rects_;  // a pass's rectangles, kept between frames
     // This frame's cover (the last frame's until bind()), and where each surface differs from
     // the background.
     std::optional<SceneCover> cover_;
-    SurfaceDamage resolved_damage_;
-    SurfaceDamage mean_damage_;
-    SurfaceDamage target_damage_;
+    TileDamage resolved_damage_;
+    TileDamage mean_damage_;
+    TileDamage target_damage_;
     GLuint last_target_ = 0;
-    PixelRect target_region_;
+    TileSet target_region_;
     // unseen_change() of the background under the display transform it was found for.
     struct UnseenChange {
         glm::dvec3 background;

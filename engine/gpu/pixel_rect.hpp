@@ -1,12 +1,11 @@
 #pragma once
 // Rectangles of pixels in a framebuffer's own coordinates (GL's: x right, y up from the
-// bottom row), for drawing only where a picture changed: the passes after the scene run under
-// a scissor around what the piece covers (hdr_picture.hpp), and the kiosk repaints a back
-// buffer only where it is stale (EGL_EXT_buffer_age).
+// bottom row), for drawing only where a picture changed: the passes after the scene run over
+// the rectangles of the tiles the piece covers (tile_set.hpp, hdr_picture.hpp), each glare
+// level over what those reach (affected_by(), read_by()).
 
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include <glm/vec2.hpp>
 
@@ -90,25 +89,5 @@ inline PixelRect read_by(const PixelRect& output, glm::dvec2 scale, double reach
                          double reach_hi, glm::ivec2 size) {
     return sides(output, scale, reach_lo, reach_hi, size, read_side);
 }
-
-// What a surface holds apart from the flat background it was cleared to, so that a frame
-// rewrites only the part that changes: the content it draws now and the content it drew last
-// (which must go). A surface whose last content is unknown (never drawn, drawn over by
-// something else, its background changed) is rewritten whole.
-class SurfaceDamage {
-  public:
-    // The region to rewrite for content `now` (nullopt: the whole surface changes, as with a
-    // background that is not one colour); remembers `now` as the surface's content.
-    PixelRect rewrite(const std::optional<PixelRect>& now, const PixelRect& whole) {
-        const PixelRect region = now && last_ ? united(*now, *last_) : whole;
-        last_ = now;
-        return region;
-    }
-    // The surface was drawn outside this bookkeeping: the next frame rewrites it whole.
-    void forget() { last_.reset(); }
-
-  private:
-    std::optional<PixelRect> last_;
-};
 
 }  // namespace gem::gpu

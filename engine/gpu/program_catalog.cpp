@@ -29,11 +29,16 @@ std::vector<ProgramSpec> all_program_specs() {
         // The environment filtered by the metal's lobe (metal_environment.hpp).
         {"metal_filter", {"fullscreen.vert"}, {"metal_filter.frag"}, {}},
         // The picture from HDR radiance to the display: glare pyramid, tone curve
-        // (hdr_picture.hpp, bloom_pass.hpp).
-        {"bloom_down", {"fullscreen.vert"}, {"bloom_down.frag"}, {}},
-        {"bloom_up", {"fullscreen.vert"}, {"bloom_up.frag"}, {}},
-        {"accumulate", {"fullscreen.vert"}, {"accumulate.frag"}, {}},
-        {"finish", {"fullscreen.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
+        // (hdr_picture.hpp, bloom_pass.hpp), each drawn over the tiles it rewrites (rect_draw.hpp).
+        {"bloom_down", {"rects.vert"}, {"bloom_down.frag"}, {}},
+        {"bloom_up", {"rects.vert"}, {"bloom_up.frag"}, {}},
+        {"accumulate", {"rects.vert"}, {"accumulate.frag"}, {}},
+        {.name = "resolve",
+         .vertex = {"rects.vert"},
+         .fragment = {"resolve.frag"},
+         .defines = {},
+         .glsl_version = "310 es"},
+        {"finish", {"rects.vert"}, {"tone_map.glsl", "finish.frag"}, {}},
     };
     // Each stone method's own, listed from the registry.
     for (const MethodEntry* method : stone_methods()) {

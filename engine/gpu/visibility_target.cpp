@@ -2,14 +2,14 @@
 
 #include <GLES3/gl31.h>
 
+#include "gpu/gl_extensions.hpp"
+
 namespace gem::gpu {
 
 int max_integer_samples() {
-    GLint major = 0, minor = 0, samples = 0;
-    glGetIntegerv(GL_MAJOR_VERSION, &major);
-    glGetIntegerv(GL_MINOR_VERSION, &minor);
+    GLint samples = 0;
     // Asked only of a context that knows the name: OpenGL ES 3.0 has none.
-    if (major > 3 || (major == 3 && minor >= 1)) glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &samples);
+    if (gl_version_at_least(3, 1)) glGetIntegerv(GL_MAX_INTEGER_SAMPLES, &samples);
     return samples;
 }
 

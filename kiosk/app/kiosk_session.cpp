@@ -307,14 +307,14 @@ Result<std::optional<FrameRecord>> KioskSession::draw_frame(double now_s) {
         // The fade drew over the whole picture: the next frame finishes it whole.
         if (fading) scene_picture.forget_target();
     }
-    // What the picture changed since the last one: nothing when it was not drawn again; all of
-    // it under a cross-fade.
-    gpu::PixelRect changed;
-    if (redraw) {
-        changed = fading ? gpu::PixelRect::whole(picture.width(), picture.height())
-                         : scene_picture.target_region();
+    if (!redraw) {
+        changed_.reset(picture.width(), picture.height());
+    } else if (fading) {
+        changed_.reset(picture.width(), picture.height(), true);
+    } else {
+        changed_ = scene_picture.target_region();
     }
-    auto presented = screen_->display().present(picture, changed);
+    auto presented = screen_->display().present(picture, changed_);
     if (!presented) return Error{"display: " + presented.error()};
     if (!presented.value()) return std::optional<FrameRecord>{};  // drawn, but not shown
     const double done_s = monotonic_now_s();

@@ -15,6 +15,7 @@
 #include "catalogue/catalogue_feed.hpp"
 #include "display/seat.hpp"
 #include "gestures/gesture_controller.hpp"
+#include "gpu/tile_set.hpp"
 #include "input/evemu_replay.hpp"
 #include "input/input_manager.hpp"
 #include "probe/auto_method.hpp"
@@ -105,6 +106,9 @@ class KioskSession {
     bool first_frame_shown_ = false;
     long frame_number_ = 0;
     double last_present_s_ = -1.0;
+    // What the picture changed since the last one presented: nothing when it was not drawn
+    // again, all of it under a cross-fade (kept between frames: a frame allocates nothing).
+    gpu::TileSet changed_;
     double last_frame_start_s_ = -1.0;
     bool snapshot_requested_ = false;
     std::optional<ViewState> last_view_;  // the last frame's, to tell a still view

@@ -8,7 +8,7 @@
 #include <array>
 #include <optional>
 
-#include "gpu/pixel_rect.hpp"
+#include "gpu/tile_set.hpp"
 
 namespace gem::kiosk {
 
@@ -17,16 +17,16 @@ class BufferDamage {
     // Frames of changes kept: a buffer older than this is drawn whole.
     static constexpr int kFrames = 4;
 
-    // The part of a back buffer drawn `age` frames ago (0: its content is undefined; nullopt:
+    // The tiles of a back buffer drawn `age` frames ago (0: its content is undefined; nullopt:
     // EGL cannot tell) to draw for a frame whose picture changed in `changed`: `changed` and
-    // every change since that buffer was drawn; all of `whole` where that is unknown.
-    // Remembers `changed` for the frames after.
-    gpu::PixelRect repaint(std::optional<int> age, const gpu::PixelRect& changed,
-                           const gpu::PixelRect& whole);
+    // every change since that buffer was drawn; all of them where that is unknown. Remembers
+    // `changed` for the frames after.
+    const gpu::TileSet& repaint(std::optional<int> age, const gpu::TileSet& changed);
 
   private:
-    std::array<gpu::PixelRect, kFrames> past_{};  // past_[0]: the last frame's change
-    int known_ = 0;                               // frames recorded in past_
+    std::array<gpu::TileSet, kFrames> past_{};  // past_[0]: the last frame's change
+    int known_ = 0;                             // frames recorded in past_
+    gpu::TileSet region_;
 };
 
 }  // namespace gem::kiosk

@@ -10,8 +10,8 @@
 #include <glm/vec2.hpp>
 
 #include "gpu/egl_context.hpp"
-#include "gpu/pixel_rect.hpp"
 #include "gpu/render_target.hpp"
+#include "gpu/tile_set.hpp"
 #include "util/result.hpp"
 
 namespace gem::kiosk {
@@ -35,10 +35,9 @@ class Display {
     // Shows the picture: true when it was handed to the screen, false when it could not be (a
     // failed modeset, no output), which the caller must not count as a frame shown. Errors are
     // for faults that end the display (the caller logs them); a lost flip or a lost output is
-    // handled inside and shows up as ready() staying false. `changed`: the picture's pixels
+    // handled inside and shows up as ready() staying false. `changed`: the picture's tiles
     // that differ from the last picture presented (y up); the display may draw only those.
-    virtual Result<bool> present(const gpu::RenderTarget& picture,
-                                 const gpu::PixelRect& changed) = 0;
+    virtual Result<bool> present(const gpu::RenderTarget& picture, const gpu::TileSet& changed) = 0;
 
     // A file descriptor to poll for input (page-flip events, hotplug, frame timer); -1: none.
     virtual int event_fd() const = 0;

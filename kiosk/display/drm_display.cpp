@@ -197,9 +197,13 @@ bool DrmDisplay::showing() const {
     return seat_->active() && connected_;
 }
 
-Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture, const gpu::PixelRect& changed) {
+Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture, const gpu::TileSet& changed) {
     // A picture not shown leaves its change for the next one to show.
-    unshown_change_ = gpu::united(unshown_change_, changed);
+    if (unshown_change_.width() != changed.width() ||
+        unshown_change_.height() != changed.height()) {
+        unshown_change_.reset(changed.width(), changed.height());
+    }
+    unshown_change_.add(changed);
     if (!ready()) return false;
     const glm::ivec2 scanout(output_.mode.hdisplay, output_.mode.vdisplay);
     if (glm::ivec2(picture.width(), picture.height()) != picture_size()) {
@@ -214,11 +218,9 @@ Result<bool> DrmDisplay::present(const gpu::RenderTarget& picture, const gpu::Pi
         log_info("display: no EGL_EXT_buffer_age: every frame draws the whole screen");
         buffer_age_logged_ = true;
     }
-    const gpu::PixelRect region = buffer_damage_.repaint(
-        age, unshown_change_, gpu::PixelRect::whole(picture.width(), picture.height()));
-    unshown_change_ = {};
-    auto drawn = present_->draw(picture, rotation_deg_, scanout,
-                                scanout_rect(region, rotation_deg_, picture_size()));
+    const gpu::TileSet& region = buffer_damage_.repaint(age, unshown_change_);
+    auto drawn = present_->draw(picture, rotation_deg_, scanout, &region);
+    unshown_change_.reset(picture.width(), picture.height());
     if (!drawn) return Error{drawn.error()};
     auto swapped = context_->swap_buffers();
     if (!swapped) return Error{"DRM display: " + swapped.error()};

@@ -45,7 +45,7 @@ class DrmDisplay final : public Display {
     gpu::EglContext& context() override { return *context_; }
     bool ready() const override;
     bool showing() const override;
-    Result<bool> present(const gpu::RenderTarget& picture, const gpu::PixelRect& changed) override;
+    Result<bool> present(const gpu::RenderTarget& picture, const gpu::TileSet& changed) override;
     int event_fd() const override { return epoll_fd_; }
     void dispatch() override;
     int timeout_ms() const override;
@@ -80,7 +80,7 @@ class DrmDisplay final : public Display {
     std::optional<gpu::EglContext> context_;
     std::optional<PresentPass> present_;
     BufferDamage buffer_damage_;
-    gpu::PixelRect unshown_change_;  // changes of pictures not yet drawn into a buffer
+    gpu::TileSet unshown_change_;  // changes of pictures not yet drawn into a buffer
     bool buffer_age_logged_ = false;
     std::unique_ptr<KmsCommit> commit_;
     int rotation_deg_ = 0;

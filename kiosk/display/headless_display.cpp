@@ -62,7 +62,7 @@ HeadlessDisplay::~HeadlessDisplay() {
 }
 
 Result<bool> HeadlessDisplay::present(const gpu::RenderTarget& picture,
-                                      const gpu::PixelRect& changed) {
+                                      const gpu::TileSet& changed) {
     (void)changed;  // the picture itself is what a headless display shows
     if (picture.width() != size_.x || picture.height() != size_.y) {
         return Error{"headless display: picture is " + std::to_string(picture.width()) + "x" +

@@ -22,7 +22,7 @@ class HeadlessDisplay final : public Display {
     int rotation_deg() const override { return 0; }
     gpu::EglContext& context() override { return context_; }
     bool ready() const override { return frame_due_; }
-    Result<bool> present(const gpu::RenderTarget& picture, const gpu::PixelRect& changed) override;
+    Result<bool> present(const gpu::RenderTarget& picture, const gpu::TileSet& changed) override;
     int event_fd() const override { return timer_fd_; }
     void dispatch() override;
     int timeout_ms() const override { return timer_fd_ < 0 ? 0 : -1; }

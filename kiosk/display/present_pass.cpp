@@ -14,8 +14,7 @@
 
 namespace gem::kiosk {
 
-PresentPass::PresentPass(gpu::Program program, Copy copy)
-    : program_(std::move(program)), empty_(gpu::make_vertex_array()) {
+PresentPass::PresentPass(gpu::Program program, Copy copy) : program_(std::move(program)) {
     if (copy != Copy::bytes) return;
     // The bytes copy reads through a sampler of its own (a sampler object's decode state
     // overrides the texture's), point-sampled at texel centres: each texel as stored, and
@@ -30,15 +29,15 @@ PresentPass::Copy PresentPass::supported_copy() {
 
 Result<PresentPass> PresentPass::make(Copy copy) {
     auto program = copy == Copy::bytes
-                       ? build_pass_program("present_bytes", "present.frag", {"PICTURE_BYTES"})
-                       : build_pass_program("present", "present.frag");
+                       ? build_pass_program("present_bytes", "present.frag", {"PICTURE_BYTES"},
+                                            PassCover::rectangles)
+                       : build_pass_program("present", "present.frag", {}, PassCover::rectangles);
     if (!program) return Error{program.error()};
     return PresentPass(std::move(program).value(), copy);
 }
 
 Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_deg,
-                               glm::ivec2 scanout,
-                               const std::optional<gpu::PixelRect>& region) const {
+                               glm::ivec2 scanout, const gpu::TileSet* region) {
     const glm::ivec2 picture_size(picture.width(), picture.height());
     assert(picture_size_for(scanout, rotation_deg) == picture_size);
     const PictureFromScanout map = picture_from_scanout(rotation_deg, picture_size);
@@ -50,13 +49,14 @@ Result<bool> PresentPass::draw(const gpu::RenderTarget& picture, int rotation_de
     program_.set("u_picture", 0);
     program_.set("u_from_scanout", map.linear);
     program_.set("u_from_scanout_offset", map.offset);
-    glBindVertexArray(empty_.get());
-    if (region) {
-        glEnable(GL_SCISSOR_TEST);
-        glScissor(region->x0, region->y0, region->width(), region->height());
-    }
-    glDrawArrays(GL_TRIANGLES, 0, 3);
     glDisable(GL_SCISSOR_TEST);
+    if (region != nullptr) {
+        region->rects(rects_);
+        for (gpu::PixelRect& r : rects_) r = scanout_rect(r, rotation_deg, picture_size);
+    } else {
+        rects_.assign(1, gpu::PixelRect::whole(scanout.x, scanout.y));
+    }
+    rect_draw_.draw(rects_, scanout);
     glBindSampler(0, 0);
     return gpu::gl_check("present pass");
 }

@@ -87,8 +87,8 @@ struct ScreenBuffer {
 };
 
 // One present pass into `screen`, over `region` (nullopt: whole), bounded by glFinish.
-double time_present(const gem::kiosk::PresentPass& pass, const gem::gpu::RenderTarget& picture,
-                    const ScreenBuffer& screen, const std::optional<gem::gpu::PixelRect>& region) {
+double time_present(gem::kiosk::PresentPass& pass, const gem::gpu::RenderTarget& picture,
+                    const ScreenBuffer& screen, const gem::gpu::TileSet* region) {
     glBindFramebuffer(GL_FRAMEBUFFER, screen.framebuffer.get());
     glFinish();
     const auto t0 = std::chrono::steady_clock::now();
@@ -154,7 +154,7 @@ gem::gpu::ComposedFrame draw_view(gem::gpu::FrameRenderer& renderer,
 
 PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
                       double zoom, int samples, double glare, int frames,
-                      const gem::gpu::RenderTarget& picture, const gem::kiosk::PresentPass& pass,
+                      const gem::gpu::RenderTarget& picture, gem::kiosk::PresentPass& pass,
                       const ScreenBuffer& screen) {
     const int w = picture.width(), h = picture.height();
     auto hdr = must(gem::gpu::HdrPicture::make(w, h, options(samples, glare, 16)));
@@ -169,7 +169,7 @@ PassCosts time_passes(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
                                                         hdr, picture, gem::gpu::FrameWait::passes);
         const gem::gpu::FrameStats& drawn = *frame.stats;
         const gem::gpu::FinishTimes& t = frame.finish;
-        const double present_ms = time_present(pass, picture, screen, hdr.target_region());
+        const double present_ms = time_present(pass, picture, screen, &hdr.target_region());
         if (f < 0) continue;
         scene.push_back(drawn.cpu_ms);
         stone.push_back(drawn.stone_ms);
@@ -214,7 +214,7 @@ Summary pass_costs(const gem::Stone& stone, const gem::Environment& environment,
                 "picture", "scene", "stone", "metal", "resolve", "mean", "glare", "tone", "present",
                 "total", "finishing", "rewritten");
     auto picture = must(gem::gpu::RenderTarget::make(w, h));
-    const auto pass = must(gem::kiosk::PresentPass::make());
+    auto pass = must(gem::kiosk::PresentPass::make());
     const ScreenBuffer screen(w, h);
     struct Look {
         const char* name;
@@ -415,14 +415,13 @@ void present_copies(int frames) {
         return;
     }
     const auto picture = must(gem::gpu::RenderTarget::make(w, h));
-    const auto bytes = must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::bytes));
-    const auto reencode =
-        must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::reencode));
+    auto bytes = must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::bytes));
+    auto reencode = must(gem::kiosk::PresentPass::make(gem::kiosk::PresentPass::Copy::reencode));
     const ScreenBuffer screen(w, h);
     std::vector<double> bytes_ms, reencode_ms, ratio;
     for (int f = -1; f < frames; ++f) {
-        const double b = time_present(bytes, picture, screen, std::nullopt);
-        const double r = time_present(reencode, picture, screen, std::nullopt);
+        const double b = time_present(bytes, picture, screen, nullptr);
+        const double r = time_present(reencode, picture, screen, nullptr);
         if (f < 0) continue;
         bytes_ms.push_back(b);
         reencode_ms.push_back(r);
@@ -447,8 +446,8 @@ gem::Image start_view(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Frami
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         if (f == 0) view.azimuth_deg += 1.0;
         draw_view(renderer, framing, view, f > 1, true, hdr, picture, gem::gpu::FrameWait::frame);
-        region = hdr.target_region();
-        rewritten = static_cast<double>(region.area()) / (double(w) * h);
+        region = hdr.target_region().bounds();
+        rewritten = static_cast<double>(hdr.target_region().area()) / (double(w) * h);
         if (f == 0 && turned != nullptr) *turned = picture.read();
     }
     return picture.read();

@@ -26,6 +26,8 @@
 #include "gpu/gl_handles.hpp"
 #include "gpu/pipeline.hpp"
 #include "gpu/program_catalog.hpp"
+#include "gpu/rect_draw.hpp"
+#include "gpu/tile_set.hpp"
 #include "gpu_test_support.hpp"
 
 namespace gem {
@@ -82,14 +84,13 @@ std::vector<float> draw_step(const char* name, int target_w, int target_h, Bind 
     const gpu::Texture out = gpu::make_texture_2d(GL_RGBA32F, target_w, target_h, GL_NEAREST);
     const gpu::Framebuffer framebuffer = gpu::make_framebuffer_with(out.get());
     EXPECT_EQ(glCheckFramebufferStatus(GL_FRAMEBUFFER), GLenum(GL_FRAMEBUFFER_COMPLETE));
-    const gpu::VertexArray empty = gpu::make_vertex_array();
+    gpu::RectDraw rects;
     glViewport(0, 0, target_w, target_h);
     glDisable(GL_SCISSOR_TEST);
     {
         const gpu::PipelineScope pass(gpu::Pipeline{&program.value()});
         bind(program.value());
-        glBindVertexArray(empty.get());
-        glDrawArrays(GL_TRIANGLES, 0, 3);
+        rects.draw(gpu::PixelRect::whole(target_w, target_h), {target_w, target_h});
     }
     std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
     glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
@@ -235,7 +236,7 @@ double glare_energy(int x, int y, float value) {
     EXPECT_TRUE(glare) << glare.error();
     if (!glare) return 0.0;
     EXPECT_TRUE(glare.value().run(scene.get()));
-    EXPECT_TRUE(glare.value().spread(gpu::PixelRect::whole(kSize, kSize)));
+    EXPECT_TRUE(glare.value().spread(gpu::TileSet::whole(kSize, kSize)));
     glDisable(GL_SCISSOR_TEST);
     const int w = kSize / 2, h = kSize / 2;  // the top level
     const gpu::Framebuffer read = gpu::make_framebuffer_with(glare.value().glare_texture());

@@ -292,7 +292,7 @@ TEST(GpuPicture, AStillFrameInBandsIsShownOnceWholeAndAddsEachRowOnce) {
         hdr.frame_drawn(8.0 * hdr.still_frame().depth / bands);
         if (bands > 1) ++banded;
         // The first band of frame 12 leaves the picture shown as it was, 12 frames' mean.
-        if (frame == 12 && bands > 1 && hdr.target_region().width() == 0) {
+        if (frame == 12 && bands > 1 && hdr.target_region().empty()) {
             expect_mean_of(12, "after the first band of frame 12");
             partial_checked = true;
         }

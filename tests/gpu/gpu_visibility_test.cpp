@@ -280,7 +280,7 @@ TEST(GpuVisibility, WithoutAMultisampledIntegerTextureOnlyASingleSampleFrameTake
     for (const int max : {0, gpu::max_integer_samples()}) {
         gpu::VisibilityTarget target(max);
         EXPECT_EQ(gpu::multisampled_visibility_note(max).empty(), max >= 2) << max;
-        picture.value().bind(std::nullopt);  // the multisampled frame's framebuffer
+        picture.value().bind(nullptr);  // the multisampled frame's framebuffer
         const gpu::VisibilityAttachment multisampled =
             target.attach(size, picture.value().samples());
         EXPECT_EQ(multisampled.texture != 0, max >= picture.value().samples()) << max;

@@ -1,5 +1,5 @@
 // Rectangles of changed pixels (gpu/pixel_rect.hpp): affected_by() against every output texel's
-// taps enumerated one by one, and SurfaceDamage's rule (this frame's content and the last).
+// taps enumerated one by one.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -107,20 +107,6 @@ TEST(GpuPixelRect, UnitedClampedAndIntersectedKeepThePixelsTheyShould) {
     // The pixels in both: x 25..30, y 20..22; apart, none.
     EXPECT_EQ(intersected(a, b), (PixelRect{25, 20, 30, 22}));
     EXPECT_TRUE(intersected(a, PixelRect{40, 0, 50, 10}).empty());
-}
-
-TEST(GpuPixelRect, ASurfaceRewritesItsLastContentAndItsNewOneWholeWhenUnknown) {
-    const PixelRect whole = PixelRect::whole(100, 80);
-    SurfaceDamage damage;
-    const PixelRect first{10, 10, 20, 20}, second{50, 40, 60, 45};
-    EXPECT_EQ(damage.rewrite(first, whole), whole);  // never drawn: all of it
-    EXPECT_EQ(damage.rewrite(second, whole), (PixelRect{10, 10, 60, 45}));
-    EXPECT_EQ(damage.rewrite(second, whole), second);
-    EXPECT_EQ(damage.rewrite(std::nullopt, whole), whole);  // the background is not flat
-    EXPECT_EQ(damage.rewrite(first, whole), whole);         // ... so the next frame too
-    damage.forget();
-    EXPECT_EQ(damage.rewrite(first, whole), whole);
-    EXPECT_EQ(damage.rewrite(first, whole), first);
 }
 
 }  // namespace

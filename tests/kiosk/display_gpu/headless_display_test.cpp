@@ -33,7 +33,7 @@ TEST(HeadlessDisplay, UnpacedIsAlwaysReady) {
     ASSERT_TRUE(picture) << picture.error();
     for (int i = 0; i < 3; ++i) {
         EXPECT_TRUE(d.ready());
-        ASSERT_TRUE(d.present(picture.value(), {}));
+        ASSERT_TRUE(d.present(picture.value(), gpu::TileSet{}));
     }
     EXPECT_TRUE(d.ready());
     EXPECT_EQ(d.presented(), 3);
@@ -49,7 +49,7 @@ TEST(HeadlessDisplay, PacedFrameComesFromTheTimer) {
     auto picture = gpu::RenderTarget::make(32, 16);
     ASSERT_TRUE(picture) << picture.error();
     ASSERT_TRUE(d.ready());  // the first frame is due at once
-    ASSERT_TRUE(d.present(picture.value(), {}));
+    ASSERT_TRUE(d.present(picture.value(), gpu::TileSet{}));
     EXPECT_FALSE(d.ready());
     for (int frame = 0; frame < 3; ++frame) {
         pollfd fd{d.event_fd(), POLLIN, 0};
@@ -57,7 +57,7 @@ TEST(HeadlessDisplay, PacedFrameComesFromTheTimer) {
         ASSERT_EQ(poll(&fd, 1, 5000), 1);
         d.dispatch();
         ASSERT_TRUE(d.ready());
-        ASSERT_TRUE(d.present(picture.value(), {}));
+        ASSERT_TRUE(d.present(picture.value(), gpu::TileSet{}));
         EXPECT_FALSE(d.ready());
     }
     EXPECT_EQ(d.presented(), 4);
@@ -68,7 +68,7 @@ TEST(HeadlessDisplay, PictureOfTheWrongSizeIsRefused) {
     ASSERT_TRUE(display) << display.error();
     auto picture = gpu::RenderTarget::make(16, 32);
     ASSERT_TRUE(picture) << picture.error();
-    auto presented = display.value()->present(picture.value(), {});
+    auto presented = display.value()->present(picture.value(), gpu::TileSet{});
     ASSERT_FALSE(presented);
     EXPECT_EQ(presented.error(), "headless display: picture is 16x32, the display 32x16");
     EXPECT_EQ(display.value()->presented(), 0);

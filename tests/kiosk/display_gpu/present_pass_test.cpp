@@ -164,22 +164,26 @@ TEST_P(PresentPassCopy, EveryByteValueRoundTrips) {
     EXPECT_EQ(sampler, 0);
 }
 
-// A region given: the pixels inside it show the new picture, the others keep what the window
-// held (a back buffer that lacks only that part).
-TEST_P(PresentPassCopy, ARegionDrawsOnlyItsOwnPixels) {
-    auto picture = gpu::RenderTarget::make(8, 6);
+// A region given: the pixels of its tiles show the new picture, the others keep what the window
+// held (a back buffer that lacks only those tiles).
+TEST_P(PresentPassCopy, ARegionDrawsOnlyItsOwnTiles) {
+    // Tiles of 32: three columns (the last 16 wide) and two rows (the last 8 high).
+    const int w = 80, h = 40;
+    auto picture = gpu::RenderTarget::make(w, h);
     ASSERT_TRUE(picture) << picture.error();
-    WindowStandIn window(8, 6);
+    WindowStandIn window(w, h);
     fill_picture(picture.value(), [](int, int) { return Rgb{10, 20, 30}; });
-    ASSERT_TRUE(pass->draw(picture.value(), 0, {8, 6}));
+    ASSERT_TRUE(pass->draw(picture.value(), 0, {w, h}));
     fill_picture(picture.value(), [](int, int) { return Rgb{200, 100, 50}; });
-    const gpu::PixelRect region{2, 1, 5, 4};  // y up
-    ASSERT_TRUE(pass->draw(picture.value(), 0, {8, 6}, region));
+    gpu::TileSet region(w, h);
+    region.mark({40, 5, 41, 6});    // tile (1, 0), y up
+    region.mark({70, 39, 71, 40});  // tile (2, 1), the partial corner
+    ASSERT_TRUE(pass->draw(picture.value(), 0, {w, h}, &region));
     const auto bytes = window.read();
-    for (int y = 0; y < 6; ++y) {
-        for (int x = 0; x < 8; ++x) {
-            const int y_up = 5 - y;
-            const bool inside = x >= 2 && x < 5 && y_up >= 1 && y_up < 4;
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            const int y_up = h - 1 - y;
+            const bool inside = (x >= 32 && x < 64 && y_up < 32) || (x >= 64 && y_up >= 32);
             EXPECT_NEAR(window.at(bytes, x, y)[0], inside ? 200 : 10, tolerance())
                 << x << ", " << y;
         }
