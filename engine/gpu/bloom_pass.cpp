@@ -136,8 +136,8 @@ void BloomPass::draw_over(std::vector<PixelRect>& rects, std::size_t level) {
         rects.assign(1, about);
     } else {
         // The tiles' rectangles, each widened by the filters' reach, overlap along their
-        // shared edges: drawn as they are, those texels would be drawn twice (half as many
-        // again at the start view). Their cells of kLevelCell texels are drawn once each.
+        // shared edges: drawn as they are, those texels would be drawn twice. The cells of
+        // kLevelCell texels they touch are drawn once each.
         TileSet& cells = level_cells_[level];
         cells.reset(levels_[level].width, levels_[level].height);
         for (const PixelRect& r : rects) cells.mark(r);

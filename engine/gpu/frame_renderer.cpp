@@ -224,7 +224,9 @@ std::optional<glm::vec3> FrameRenderer::flat_background(const Camera& camera) co
 
 const SceneCover* FrameRenderer::cover(const Camera& camera) {
     const std::optional<glm::vec3> background = flat_background(camera);
-    if (!background) return nullptr;
+    // The boxes are projected as an orthographic camera sees them; a perspective one (a loose
+    // stone seen from a distance, on a flat colour) finishes the whole picture.
+    if (!background || !camera.orthographic()) return nullptr;
     // Two pixels more each way: a triangle's edge rasterises into the pixels it touches, and
     // MSAA's samples sit within them.
     mark_cover(cover_boxes_, camera, 2, cover_.tiles);

@@ -76,7 +76,8 @@ class FrameRenderer {
     // What render() draws through `camera` besides its background, when that background is
     // one colour (FrameSetup::background_colour, or what an orthographic camera sees of the
     // environment): the tiles that the boxes about each stone and the metal's cells touch
-    // (scene_cover.hpp). Null where the background shows the environment's changing view. Held
+    // (scene_cover.hpp). Null where the background shows the environment's changing view, or
+    // the camera is a perspective one (the boxes are projected orthographically). Held
     // by the renderer until the next call (a frame allocates nothing for it).
     const SceneCover* cover(const Camera& camera);
     // Why a still view's metal and stones do not see their own piece (piece_path.glsl), where

@@ -12,6 +12,8 @@
 namespace gem::gpu {
 
 std::vector<CoverBox> metal_cover_boxes(const MetalMesh& mesh, double cell_mm) {
+    // A metal of no extent (every vertex at the centre) still has cells to fall in.
+    if (!(cell_mm > 1e-6)) cell_mm = 1.0;
     std::vector<CoverBox> boxes;
     std::unordered_map<std::uint64_t, std::size_t> cell_box;
     const auto cell_of = [cell_mm](double v) {
@@ -46,6 +48,8 @@ void mark_cover(const std::vector<CoverBox>& boxes, const Camera& camera, int ma
                             h - 0.5 * h * (1.0 - camera.shift().y));
     const glm::dvec3 right_abs = glm::abs(camera.right()), up_abs = glm::abs(camera.up());
     for (const CoverBox& box : boxes) {
+        // A box about nothing (a stone of no vertices) covers nothing.
+        if (!(box.lo.x <= box.hi.x && box.lo.y <= box.hi.y && box.lo.z <= box.hi.z)) continue;
         const glm::dvec3 mid = 0.5 * (box.lo + box.hi), half = 0.5 * (box.hi - box.lo);
         const glm::dvec2 at =
             centre + glm::dvec2(glm::dot(mid, camera.right()), glm::dot(mid, camera.up())) /

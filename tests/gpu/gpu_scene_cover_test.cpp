@@ -1,7 +1,7 @@
 // The tiles a frame's scene covers (gpu/scene_cover.hpp, FrameRenderer::cover()): every pixel
 // the shipped halo draws, at 4× MSAA, lies in one of them, as the piece turns, tilts, grows past
 // the picture's edge and shrinks. The picture drawn whole, every pixel compared with the
-// background's own code, is the independent check.
+// background's own code, is the independent check. A perspective camera has no cover.
 #include <gtest/gtest.h>
 
 #include <cstdio>
@@ -88,6 +88,11 @@ TEST(GpuSceneCover, EveryPixelThePieceDrawsIsInACoveredTile) {
         std::printf("azimuth %5.0f: %ld tiles covered, %ld drawn into\n", view.azimuth_deg,
                     tiles.tile_count(), drawn_tiles.tile_count());
     }
+    // A perspective eye sees the boxes otherwise than their orthographic projection: no cover,
+    // the picture finished whole.
+    CameraSettings near;
+    near.perspective_distance_mm = 3.0 * framing;
+    EXPECT_EQ(renderer.value().cover(Camera::make(near, framing, w, h).value()), nullptr);
 }
 
 }  // namespace
