@@ -220,8 +220,15 @@ class Guest:
         self.shots = 0
 
     def unit(self, *properties):
-        text = self.shell.run("systemctl show gemkiosk.service -p " + ",".join(properties))
-        values = dict(line.split("=", 1) for line in text.splitlines() if "=" in line)
+        # `systemctl show` prints every property asked for, an empty one as "Name=". Once (1 run
+        # of 2) its answer over the serial shell lacked one right after the unit went active:
+        # asked again.
+        for _ in range(3):
+            text = self.shell.run("systemctl show gemkiosk.service -p " + ",".join(properties))
+            values = dict(line.split("=", 1) for line in text.splitlines() if "=" in line)
+            if all(p in values for p in properties):
+                break
+            time.sleep(1)
         return [values.get(p, "") for p in properties]
 
     def wait_active(self, timeout_s, restarts=None):
