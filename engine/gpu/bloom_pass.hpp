@@ -100,8 +100,9 @@ class BloomPass {
     bool mark_shown(const PixelRect& region, const GlareCut& cut);
     // Level i's sum, down + the next level's sum upsampled, over `rects` (draw_over()).
     void draw_sum(std::size_t i, std::vector<PixelRect>& rects);
-    // Draws the bound pass over `rects` of `level`: each, or the rectangle about them all where
-    // that is no larger (the smaller levels, where the tiles' reaches overlap).
+    // Draws the bound pass over `rects` of `level`: the rectangle about them all where that is
+    // no larger (the smaller levels, where the tiles' reaches overlap), else the cells of
+    // kLevelCell texels they touch, each once.
     void draw_over(std::vector<PixelRect>& rects, std::size_t level);
     // Each level's rectangles that `rects` (of the picture) reach, down and summed
     // (level_regions()), into down_rects_ and sum_rects_.
@@ -116,8 +117,9 @@ class BloomPass {
     // has (HdrPicture's are point-sampled: its other passes fetch texels), so that each of the
     // 13 taps averages 2×2 of its pixels. Point-sampled, the taps see one pixel of each 2×2
     // block in a checkerboard, and a sparkle's glare comes and goes as it moves by a pixel
-    // (GpuBloomEnergy). (Fetching the 36 texels the taps average instead took llvmpipe 8.3 ms
-    // against the taps' 5.7-6.6 at the start view: its filtering is vectorised.)
+    // (GpuBloomEnergy). Fetching the 36 texels the taps average instead, each once, took
+    // llvmpipe longer: 8.3 ms against the taps' 5.7 and 6.6 (the first step's mean over
+    // bench_picture's frames, run in turn, 2026-12-06).
     Sampler picture_sampler_;
     std::vector<Level> levels_;
     TileDamage damage_;

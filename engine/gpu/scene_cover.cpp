@@ -17,7 +17,8 @@ std::vector<CoverBox> metal_cover_boxes(const MetalMesh& mesh, double cell_mm) {
     std::vector<CoverBox> boxes;
     std::unordered_map<std::uint64_t, std::size_t> cell_box;
     const auto cell_of = [cell_mm](double v) {
-        // Within a piece's reach (kFarthestCornerMm) a cell index fits 21 bits with room.
+        // 21 bits an axis: the metal's cells (a 24th of its radius, FrameRenderer) number 48
+        // across it. Indices further out would alias, merging boxes: still about every triangle.
         return static_cast<std::uint64_t>(static_cast<std::int64_t>(std::floor(v / cell_mm)) +
                                           (1 << 20)) &
                0x1fffff;
