@@ -105,13 +105,13 @@ bool BloomPass::mark_shown(const PixelRect& region, const GlareCut& cut) {
     const LevelRegions none{};
     for (int y = 0; y < region.height(); ++y) {
         const float* row = read_back_.data() + static_cast<std::size_t>(y) * region.width() * 4;
+        const auto shown = [&](int i) {
+            const glm::vec3 change =
+                glm::abs(glm::vec3(row[i * 4], row[i * 4 + 1], row[i * 4 + 2]) - flat) * weight;
+            return std::max({change.x, change.y, change.z}) >= unseen;
+        };
         // Each run of shown texels along the row, marked as the pixels whose glare reads it.
         for (int x = 0; x < region.width();) {
-            const auto shown = [&](int i) {
-                const glm::vec3 change =
-                    glm::abs(glm::vec3(row[i * 4], row[i * 4 + 1], row[i * 4 + 2]) - flat) * weight;
-                return std::max({change.x, change.y, change.z}) >= unseen;
-            };
             if (!shown(x)) {
                 ++x;
                 continue;
@@ -219,21 +219,23 @@ Result<const TileSet*> BloomPass::run(GLuint scene, const TileSet* content,
     // rectangles, and the cut level's where the display shows it (all of it without a cut).
     shown_ = *content;
     content->rects(tile_rects_);
-    PixelRect read;
-    bool cutting = cut && !cut_unavailable_;
-    for (const PixelRect& r : tile_rects_) {
-        LevelRegions down, sum;
-        level_regions(r, down, sum);
-        shown_.mark(picture_reach(down, cutting ? PixelRect{} : sum[k]));
-        read = united(read, sum[k]);
-    }
-    if (cutting && !mark_shown(read, *cut)) {
-        cut_unavailable_ = true;
+    // Marks each rectangle's reach through the finer levels, and through the cut level's sum
+    // too where it is not read back; gives the cut level's texels the rectangles reach.
+    const auto mark_reach = [&](bool cut_level_too) {
+        PixelRect read;
         for (const PixelRect& r : tile_rects_) {
             LevelRegions down, sum;
             level_regions(r, down, sum);
-            shown_.mark(picture_reach(down, sum[k]));
+            shown_.mark(picture_reach(down, cut_level_too ? sum[k] : PixelRect{}));
+            read = united(read, sum[k]);
         }
+        return read;
+    };
+    const bool cutting = cut && !cut_unavailable_;
+    const PixelRect read = mark_reach(!cutting);
+    if (cutting && !mark_shown(read, *cut)) {
+        cut_unavailable_ = true;
+        mark_reach(true);
     }
     return &shown_;
 }

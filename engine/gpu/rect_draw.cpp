@@ -34,9 +34,4 @@ void RectDraw::draw(const std::vector<PixelRect>& rects, glm::ivec2 size) {
     glBindVertexArray(0);
 }
 
-void RectDraw::draw(const PixelRect& rect, glm::ivec2 size) {
-    one_.assign(1, rect);
-    draw(one_, size);
-}
-
 }  // namespace gem::gpu

@@ -20,14 +20,11 @@ class RectDraw {
     // Draws the bound program over `rects`, in the pixels of a target of `size` (its viewport
     // the whole target); the empty ones are skipped. Leaves vertex array 0 bound.
     void draw(const std::vector<PixelRect>& rects, glm::ivec2 size);
-    // The same over one rectangle.
-    void draw(const PixelRect& rect, glm::ivec2 size);
 
   private:
     VertexArray vertex_array_;
     Buffer buffer_;
     std::vector<float> scratch_;  // this draw's vertices, kept between draws
-    std::vector<PixelRect> one_;
 };
 
 }  // namespace gem::gpu

@@ -107,10 +107,10 @@ void centre_on_the_centre_stone(Piece& piece) {
 
 std::string beyond_reach(const Piece& piece) {
     double farthest = 0.0;
-    bool number = true;
+    bool finite = true;
     const auto reach = [&](const glm::dvec3& p) {
         const double d = glm::length(p);
-        if (std::isnan(d)) number = false;
+        finite = finite && std::isfinite(d);
         farthest = std::max(farthest, d);
     };
     for (const glm::vec3& p : piece.metal.positions) reach(glm::dvec3(p));
@@ -119,7 +119,7 @@ std::string beyond_reach(const Piece& piece) {
             reach(piece.stones[i].placement.to_piece(v));
         }
     }
-    if (!number || std::isinf(farthest)) {
+    if (!finite) {
         return "a corner of the piece is not a finite number of millimetres";
     }
     if (!(farthest > kFarthestCornerMm)) return {};

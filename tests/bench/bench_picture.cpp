@@ -28,9 +28,9 @@
 //     glare wherever its filters reach, the trace at 4× MSAA with glare 0.04 at the kiosk's
 //     1920×1080 start view, a moving frame and the still view's 16th: mean and largest ΔE00
 //     over the whole picture, the largest 8-bit code apart, and the share of the picture
-//     each rewrote; and of what the cut one rewrote, the share of its 32-pixel tiles that hold
-//     a pixel off the background's colour (in the moving frame, or the one before it): what
-//     the passes after the scene would rewrite if they ran tile by tile.
+//     each rewrote; and of the 32-pixel tiles the cut one rewrote, the share that hold a pixel
+//     off the background's colour (in the moving frame, or the one before it): how near the
+//     tiles the passes after the scene run over come to those they must.
 //
 //   bench_picture [--frames N] [--turn N]
 #include <algorithm>
@@ -435,53 +435,45 @@ namespace {
 
 // The start view through `hdr` after a frame turned 1° away (the first frame rewrites the
 // whole picture): its moving frame's picture (`still` 0), or its still view's after `still`
-// frames; `rewritten`: the last frame's share of the picture, and `region` the region itself;
+// frames; `rewritten`: the last frame's share of the picture, and `region` its tiles;
 // `turned`, where given, gets the frame turned 1° away.
 gem::Image start_view(gem::gpu::FrameRenderer& renderer, const gem::kiosk::Framing& framing,
                       gem::gpu::HdrPicture& hdr, const gem::gpu::RenderTarget& picture, int still,
-                      double& rewritten, gem::gpu::PixelRect& region,
-                      gem::Image* turned = nullptr) {
+                      double& rewritten, gem::gpu::TileSet& region, gem::Image* turned = nullptr) {
     const int w = picture.width(), h = picture.height();
     for (int f = 0; f < std::max(still, 1) + 1; ++f) {
         gem::kiosk::ViewState view = gem::kiosk::kStartView;
         if (f == 0) view.azimuth_deg += 1.0;
         draw_view(renderer, framing, view, f > 1, true, hdr, picture, gem::gpu::FrameWait::frame);
-        region = hdr.target_region().bounds();
+        region = hdr.target_region();
         rewritten = static_cast<double>(hdr.target_region().area()) / (double(w) * h);
         if (f == 0 && turned != nullptr) *turned = picture.read();
     }
     return picture.read();
 }
 
-// Of the kTile-pixel tiles of `region` (GL's rows, bottom up), the share holding a pixel whose
-// 8-bit code differs from the background's (the picture's corner) in either picture (read top
-// row first): what the passes after the scene would rewrite, run tile by tile over where the
-// picture changes from the background this frame or the last, of what they rewrite now.
+// Of the tiles of `region` (GL's rows, bottom up), the share holding a pixel whose 8-bit code
+// differs from the background's (the picture's corner) in either picture (read top row first):
+// of what the passes after the scene rewrite, what they had to.
 double tiles_off_the_background(const gem::Image& a, const gem::Image& b,
-                                const gem::gpu::PixelRect& region) {
-    constexpr int kTile = 32;
+                                const gem::gpu::TileSet& region) {
     const int w = a.width, h = a.height;
     const auto code = [w, h](const gem::Image& image, int x, int y) {
         return glm::ivec3(gem::linear_to_srgb8(
             glm::dvec3(image.pixels[static_cast<std::size_t>(h - 1 - y) * w + x])));
     };
     const glm::ivec3 background = code(a, 0, 0);
-    const int tx0 = region.x0 / kTile, ty0 = region.y0 / kTile;
-    const int tx1 = (region.x1 + kTile - 1) / kTile, ty1 = (region.y1 + kTile - 1) / kTile;
-    long tiles = 0, changing = 0;
-    for (int ty = ty0; ty < ty1; ++ty) {
-        for (int tx = tx0; tx < tx1; ++tx) {
-            ++tiles;
-            bool off = false;
-            for (int y = ty * kTile; y < std::min((ty + 1) * kTile, h) && !off; ++y) {
-                for (int x = tx * kTile; x < std::min((tx + 1) * kTile, w) && !off; ++x) {
-                    off = code(a, x, y) != background || code(b, x, y) != background;
-                }
+    gem::gpu::TileSet off(w, h);
+    for (int y = 0; y < h; ++y) {
+        for (int x = 0; x < w; ++x) {
+            if (region.has_pixel(x, y) &&
+                (code(a, x, y) != background || code(b, x, y) != background)) {
+                off.mark({x, y, x + 1, y + 1});
             }
-            changing += off ? 1 : 0;
         }
     }
-    return tiles > 0 ? static_cast<double>(changing) / static_cast<double>(tiles) : 0.0;
+    const long tiles = region.tile_count();
+    return tiles > 0 ? static_cast<double>(off.tile_count()) / static_cast<double>(tiles) : 0.0;
 }
 
 void glare_cut(const gem::Stone& stone, const gem::Environment& environment) {
@@ -491,7 +483,7 @@ void glare_cut(const gem::Stone& stone, const gem::Environment& environment) {
         "0.04, %d×%d, the start view (whole picture)\n",
         w, h);
     std::printf("%-22s %10s %10s %12s %14s %14s %18s\n", "frame", "mean ΔE00", "max ΔE00",
-                "most codes", "cut rewrote", "uncut rewrote", "of it, tiles off bg");
+                "most codes", "cut rewrote", "uncut rewrote", "of its tiles, off bg");
     const auto ring = must(gem::make_ring({}, stone));
     auto renderer = make_renderer("trace", stone, environment, &ring);
     std::vector<glm::dvec3> ring_points(ring.positions.begin(), ring.positions.end());
@@ -503,7 +495,7 @@ void glare_cut(const gem::Stone& stone, const gem::Environment& environment) {
         gem::Image shown[2];
         gem::Image turned;
         double rewritten[2] = {};
-        gem::gpu::PixelRect region[2];
+        gem::gpu::TileSet region[2];
         for (const bool cut : {true, false}) {
             gem::gpu::PictureOptions o = options(4, 0.04, 16);
             o.glare_cut = cut;

@@ -90,7 +90,7 @@ std::vector<float> draw_step(const char* name, int target_w, int target_h, Bind 
     {
         const gpu::PipelineScope pass(gpu::Pipeline{&program.value()});
         bind(program.value());
-        rects.draw(gpu::PixelRect::whole(target_w, target_h), {target_w, target_h});
+        rects.draw({gpu::PixelRect::whole(target_w, target_h)}, {target_w, target_h});
     }
     std::vector<float> got(static_cast<std::size_t>(target_w) * target_h * 4);
     glReadPixels(0, 0, target_w, target_h, GL_RGBA, GL_FLOAT, got.data());
